@@ -615,8 +615,7 @@ TEST(MeshRepair, CubesSharingAnEdgeAreSplitThere) {
 
 // The unit cube with every triangle facing inwards (volume −1): refused, the
 // refusal naming --repair; --repair turns all 12 round, volume +1 exactly
-// (products of 0 and 1). Two cubes, one inward, are a cavity or a mistake
-// the user must resolve: neither is turned round.
+// (products of 0 and 1).
 TEST(MeshRepair, InsideOutCubeIsTurnedRound) {
   TriangleMesh cube = unit_cube();
   for (auto& t : cube.triangles) std::swap(t[1], t[2]);
@@ -636,18 +635,59 @@ TEST(MeshRepair, InsideOutCubeIsTurnedRound) {
   EXPECT_NO_THROW(check_closed_mesh(cube));
   EXPECT_EQ(six_volume(cube) / 6.0, 1.0);
 
-  TriangleMesh two = unit_cube();
-  const std::size_t n = two.vertices.size();
-  for (std::size_t k = 0; k < n; ++k) two.vertices.push_back(two.vertices[k] + Vec3(3, 0, 0));
-  const std::size_t m = two.triangles.size();
-  for (std::size_t k = 0; k < m; ++k) {
-    auto t = two.triangles[k];
-    for (auto& i : t) i += std::int32_t(n);
-    std::swap(t[1], t[2]);
-    two.triangles.push_back(t);
+}
+
+// A unit cube facing outwards and, beside it, a second one (a patch of a CAD
+// export) facing inwards: the second encloses no void, since no part
+// encloses it; it is wound the other way. Refused naming its first triangle
+// (12, counted from 0) and --repair; --repair turns its 12 triangles round
+// and leaves the first cube's alone: volume 2 exactly. Moved inside a cube
+// of side 4, the inward cube is a cavity: refused, repair or not.
+TEST(MeshRepair, AnInwardPartInsideNoOtherIsTurnedRoundACavityIsNot) {
+  const auto with_inward_cube = [](TriangleMesh mesh, const Vec3& at) {
+    const TriangleMesh cube = unit_cube();
+    const auto n = std::int32_t(mesh.vertices.size());
+    for (const Vec3& v : cube.vertices) mesh.vertices.push_back(v + at);
+    for (auto t : cube.triangles) {
+      for (auto& i : t) i += n;
+      std::swap(t[1], t[2]);
+      mesh.triangles.push_back(t);
+    }
+    return mesh;
+  };
+  TriangleMesh two = with_inward_cube(unit_cube(), Vec3(3, 0, 0));
+  try {
+    check_closed_mesh_offering_repair(two, "--repair");
+    ADD_FAILURE() << "an inward cube beside an outward one accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("1 inward-facing part(s) that lie inside no other part (e.g. the part of "
+                                         "triangle 12, counted from 0)"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("(or pass --repair to let skeletonize turn those parts round)"),
+              std::string::npos)
+        << e.what();
   }
-  EXPECT_THROW(check_closed_mesh_repairing(two), InputError);
+  const InputRepair repair = check_closed_mesh_repairing(two);
+  EXPECT_EQ(repair.surface.triangles_flipped, 12u);
+  EXPECT_EQ(repair.surface.parts_flipped, 1u);
   EXPECT_EQ(two.triangles[0], unit_cube().triangles[0]);
+  EXPECT_NO_THROW(check_closed_mesh(two));
+  EXPECT_EQ(six_volume(two) / 6.0, 2.0);
+
+  TriangleMesh big = unit_cube();
+  for (Vec3& v : big.vertices) v = 4.0 * v - Vec3(1.5, 1.5, 1.5);
+  TriangleMesh hollow = with_inward_cube(big, Vec3(0, 0, 0));
+  try {
+    check_closed_mesh_offering_repair(hollow, "--repair");
+    ADD_FAILURE() << "a cavity accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("1 inward-facing part(s) inside other parts, i.e. cavities"),
+              std::string::npos)
+        << e.what();
+    EXPECT_EQ(std::string(e.what()).find("--repair"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(check_closed_mesh_repairing(hollow), InputError);
 }
 
 
@@ -655,9 +695,8 @@ TEST(MeshRepair, InsideOutCubeIsTurnedRound) {
 // (1, 1, 1) (x = 1, y = 1, z = 1) leaves one hole, a skew hexagon. Any
 // patch spanning it has at least the area of its projection along (1, 1,
 // 1), 3 × 1/√3 = √3, so it would be at least √3 / (3 + √3) = 36.6% of the
-// closed surface: refused, naming the cycle's size. A hole with a flipped
-// triangle beside it is refused for the orientation, not repaired.
-TEST(MeshRepair, HalfOpenBoxAndFlippedTrianglesAreRefused) {
+// closed surface: refused, naming the cycle's size.
+TEST(MeshRepair, HalfOpenBoxIsRefusedAHoleBesideAFlippedTriangleIsFilled) {
   TriangleMesh box = unit_cube();
   box.triangles = {{0, 2, 1}, {0, 3, 2}, {0, 1, 5}, {0, 5, 4}, {3, 0, 4}, {3, 4, 7}};
   try {
@@ -668,14 +707,70 @@ TEST(MeshRepair, HalfOpenBoxAndFlippedTrianglesAreRefused) {
     EXPECT_NE(message.find("too large to fill: 6 boundary edges"), std::string::npos) << message;
     EXPECT_NE(message.find("--repair fills up to 25%"), std::string::npos) << message;
   }
+  // Without one triangle and with another flipped, the cube is oriented
+  // first (the flipped one turned to agree with its neighbours), then its
+  // hole filled: volume 1.
   TriangleMesh flipped = unit_cube();
   flipped.triangles.erase(flipped.triangles.begin());
   std::swap(flipped.triangles[5][1], flipped.triangles[5][2]);
+  const InputRepair repair = check_closed_mesh_repairing(flipped);
+  EXPECT_EQ(repair.surface.triangles_reoriented, 1u);
+  EXPECT_EQ(repair.surface.holes_filled, 1u);
+  EXPECT_NEAR(six_volume(flipped) / 6.0, 1.0, 1e-12);
+}
+
+// Triangles flipped against their neighbours (a shuffled export): the
+// cube with its triangles 0, 5 and 7 flipped is refused, the message
+// naming --repair; --repair turns the three back (the part keeps its first
+// triangle's orientation, 0's: flipped, so the other nine are turned and
+// the part, now facing inwards, turned round whole): volume 1 exactly. A
+// Möbius band (six quads, the last joined with a half twist) has no
+// consistent orientation: refused, repair or not.
+TEST(MeshRepair, TrianglesFlippedAgainstTheirNeighboursAreOriented) {
+  TriangleMesh cube = unit_cube();
+  for (const std::size_t t : {0u, 5u, 7u}) std::swap(cube.triangles[t][1], cube.triangles[t][2]);
   try {
-    check_closed_mesh_repairing(flipped);
-    ADD_FAILURE() << "a flipped triangle repaired";
+    check_closed_mesh_offering_repair(cube, "--repair");
+    ADD_FAILURE() << "an inconsistently oriented cube accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("(--repair does not flip single triangles)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("the mesh's orientation is inconsistent"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("(or pass --repair to let skeletonize orient its triangles consistently)"),
+              std::string::npos)
+        << e.what();
+  }
+  const InputRepair repair = check_closed_mesh_repairing(cube);
+  EXPECT_EQ(repair.surface.triangles_reoriented, 9u);
+  EXPECT_EQ(repair.surface.triangles_flipped, 12u);
+  EXPECT_EQ(repair.surface.parts_flipped, 1u);
+  EXPECT_NO_THROW(check_closed_mesh(cube));
+  EXPECT_EQ(six_volume(cube) / 6.0, 1.0);
+  EXPECT_EQ(cube.triangles, unit_cube().triangles);
+
+  TriangleMesh band;
+  constexpr int n = 6;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / n, tilt = a / 2.0;
+    const Vec3 centre(std::cos(a), std::sin(a), 0.0), radial(std::cos(a), std::sin(a), 0.0);
+    const Vec3 across = 0.3 * (std::cos(tilt) * radial + std::sin(tilt) * Vec3::UnitZ());
+    band.vertices.push_back(centre + across);  // 2i: one edge of the band
+    band.vertices.push_back(centre - across);  // 2i + 1: the other
+  }
+  for (int i = 0; i < n; ++i) {
+    // The last quad joins vertex 2(n−1) to 1 and 2(n−1) + 1 to 0: the twist.
+    const std::int32_t a = 2 * i, b = 2 * i + 1;
+    const std::int32_t c = i + 1 < n ? 2 * i + 3 : 0, d = i + 1 < n ? 2 * i + 2 : 1;
+    band.triangles.push_back({a, b, c});
+    band.triangles.push_back({a, c, d});
+  }
+  for (const bool repair_it : {false, true}) {
+    try {
+      TriangleMesh copy = band;
+      if (repair_it) check_closed_mesh_repairing(copy);
+      else check_closed_mesh_offering_repair(copy, "--repair");
+      ADD_FAILURE() << "a Möbius band accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("the mesh is not orientable"), std::string::npos) << e.what();
+    }
   }
 }
 

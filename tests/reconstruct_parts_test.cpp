@@ -140,6 +140,29 @@ TEST(MedialParts, EachPartsSpheresFollowItsOwnPoints) {
   }
 }
 
+// A part that no sphere lies deepest in (a thin part beside a thick one,
+// whose spheres the thick part's took): its points meet the empty sum
+// (f = 0) and get no row, and the fit goes on. The highest part, 1, has
+// none here, so the spheres' parts alone count one part.
+TEST(MedialParts, APartWithoutSpheresIsFittedAsTheEmptySum) {
+  MedialMesh m;
+  m.spheres = {Vec4(0, 0, 0, 0.8)};
+  m.isolated = {0};
+  m.parts = {0};
+  std::vector<WeightedPoint> points;
+  std::vector<std::int32_t> parts;
+  for (int part = 0; part < 2; ++part)
+    for (const Vec3& d : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)}) {
+      points.push_back({Vec3(4.0 * part, 0, 0) + d, 1.0});
+      parts.push_back(part);
+    }
+  const ReconstructOptions o;
+  MedialFitOptions fit;
+  MedialFitReport report;
+  const MedialMesh fitted = fit_medial_mesh(m, points, {}, file_field(o), fit, &report, {}, {}, {}, parts);
+  EXPECT_NEAR(fitted.spheres[0].w(), 1.0, 1e-3) << "part 0's sphere follows its own points";
+}
+
 TEST(MedialParts, TrianglePartsAndElementParts) {
   // Two tetrahedra in one mesh, the second's triangles listed first.
   TriangleMesh two;

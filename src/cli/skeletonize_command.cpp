@@ -97,10 +97,10 @@ std::string repair_json(const reconstruct::InputRepair& repair, double seconds) 
       s.repaired() ? fmt::format("{{\"non_manifold_edges\": {}, \"vertices_split\": {}, \"isolated_vertices_removed\": {}, "
                                  "\"boundary_edges\": {}, \"holes_filled\": {}, \"holes_not_faired\": {}, "
                                  "\"triangles_added\": {}, \"vertices_added\": {}, \"largest_hole_area\": {:.4g}, "
-                                 "\"triangles_flipped\": {}}}",
+                                 "\"triangles_reoriented\": {}, \"triangles_flipped\": {}, \"parts_flipped\": {}}}",
                                  s.non_manifold_edges, s.vertices_split, s.isolated_vertices_removed, s.boundary_edges,
                                  s.holes_filled, s.holes_not_faired, s.triangles_added, s.vertices_added,
-                                 s.largest_hole_area, s.triangles_flipped)
+                                 s.largest_hole_area, s.triangles_reoriented, s.triangles_flipped, s.parts_flipped)
                    : "null";
   const std::string union_ =
       o.crossing_pairs > 0 ? fmt::format("{{\"crossing_pairs\": {}, \"action\": \"boolean_union\", "
@@ -290,9 +290,14 @@ int run_skeletonize(const SkeletonizeOptions& options) {
         if (s.isolated_vertices_removed)
           done += fmt::format("{}removed {} vertices of no triangle", done.empty() ? "" : "; ",
                               s.isolated_vertices_removed);
+        if (s.triangles_reoriented)
+          done += fmt::format("{}turned {} triangles round to agree with their neighbours", done.empty() ? "" : "; ",
+                              s.triangles_reoriented);
         if (s.triangles_flipped)
-          done += fmt::format("{}turned its {} triangles round", done.empty() ? "" : "; ", s.triangles_flipped);
+          done += fmt::format("{}turned {} inward-facing part(s) round ({} triangles)", done.empty() ? "" : "; ",
+                              s.parts_flipped, s.triangles_flipped);
         std::vector<std::string> problems;
+        if (s.triangles_reoriented) problems.emplace_back("inconsistently oriented");
         if (s.non_manifold_edges) problems.emplace_back("not manifold");
         if (s.holes_filled || (s.isolated_vertices_removed && !s.non_manifold_edges)) problems.emplace_back("open");
         if (s.triangles_flipped) problems.emplace_back("inside out");

@@ -120,7 +120,7 @@ std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& poi
   return merged;
 }
 
-std::vector<Vec4> fit_component_spheres(const TriangleMesh& mesh, double h) {
+std::vector<Vec4> fit_component_spheres(const TriangleMesh& mesh, double h, double max_radius, std::size_t* flat) {
   std::vector<std::int32_t> parent(mesh.vertices.size());
   for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = std::int32_t(i);
   for (const auto& t : mesh.triangles)
@@ -133,8 +133,16 @@ std::vector<Vec4> fit_component_spheres(const TriangleMesh& mesh, double h) {
     append_points(mesh, t, h, points[it->second]);
   }
   std::vector<Vec4> spheres;
-  for (const auto& p : points)
-    if (!p.empty()) spheres.push_back(fit_sphere(p, centroid(p)));
+  if (flat) *flat = 0;
+  for (const auto& p : points) {
+    if (p.empty()) continue;
+    const Vec3 start = centroid(p);
+    spheres.push_back(fit_sphere(p, start));
+    if (!(spheres.back().w() <= max_radius)) {
+      spheres.back() << start, best_radius(p, start);
+      if (flat) ++*flat;
+    }
+  }
   return spheres;
 }
 

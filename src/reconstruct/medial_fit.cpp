@@ -99,10 +99,16 @@ Evaluation evaluate(const MedialMesh& mesh, const FitPoints& fit_points, const M
   if (mesh.parts.empty()) {
     e.part_meshes = {mesh};
   } else {
-    for (std::size_t p = 0; p < part_count(mesh); ++p) e.part_meshes.push_back(medial_mesh_part(mesh, std::int32_t(p)));
+    // Every point's part, also one that no sphere lies deepest in (a thin
+    // part beside a thick one, whose spheres the thick part's took).
+    std::size_t parts = part_count(mesh);
+    for (const std::int32_t part : fit_points.parts) parts = std::max(parts, std::size_t(part) + 1);
+    for (std::size_t p = 0; p < parts; ++p) e.part_meshes.push_back(medial_mesh_part(mesh, std::int32_t(p)));
   }
-  // A part left with no primitive (all its spheres merged away) has the
-  // empty sum, f = 0: its points have no row.
+  // A part left with no primitive (no sphere lies deepest in it, or all its
+  // spheres merged away) has the empty sum, f = 0: nothing the fit moves
+  // reaches its points, which have no row and are left out of the
+  // objective (the result's measurement sees the part missing).
   double iso = 1.0;
   for (const MedialMesh& part : e.part_meshes) {
     const bool empty =
@@ -119,9 +125,13 @@ Evaluation evaluate(const MedialMesh& mesh, const FitPoints& fit_points, const M
   skelconv::detail::parallel_for(points.size(), [&](std::size_t k) {
     const std::int32_t part = fit_points.parts[k];
     const Skeleton& skeleton = e.skeletons[std::size_t(part)];
+    e.foot[k] = points[k].point;
+    if (skeleton.primitives().empty()) {
+      e.no_row[k] = true, e.delta[k] = 0.0, e.slope[k] = 0.0;
+      return;
+    }
     FieldSample s = skeleton.value_and_gradient(points[k].point);
     const double radius = mesh.spheres[nearest_sphere(mesh, points[k].point, part)].w();
-    e.foot[k] = points[k].point;
     e.no_row[k] = !(s.value != 0.0) || !std::isfinite(s.value) || !s.gradient.allFinite();
     if (e.no_row[k]) {
       e.delta[k] = -radius, e.slope[k] = iso / radius;
@@ -143,6 +153,7 @@ Evaluation evaluate(const MedialMesh& mesh, const FitPoints& fit_points, const M
   });
   double sum = 0.0, total = 0.0, inside_sum = 0.0, inside_total = 0.0;
   for (std::size_t k = 0; k < points.size(); ++k) {
+    if (e.skeletons[std::size_t(fit_points.parts[k])].primitives().empty()) continue;
     if (!fit_points.on_surface(k)) {
       if (e.delta[k] >= 0.0) e.delta[k] = 0.0, e.no_row[k] = true;
       inside_sum += points[k].weight * e.delta[k] * e.delta[k], inside_total += points[k].weight;

@@ -36,6 +36,12 @@ std::vector<std::array<std::int32_t, 3>> proper_triangles(const TriangleMesh& me
   return out;
 }
 
+/// The index in `mesh` of a triangle of proper_triangles(mesh), as a user
+/// counts in the file (from 0, the degenerate ones included).
+std::size_t mesh_index(const TriangleMesh& mesh, const std::array<std::int32_t, 3>& triangle) {
+  return std::size_t(std::find(mesh.triangles.begin(), mesh.triangles.end(), triangle) - mesh.triangles.begin());
+}
+
 /// " (e.g. between vertices i and j)": one edge of a problem, so that a user
 /// can find it in a viewer (indices count from 0 in the file's order).
 std::string example_edge(const Edge& e) {
@@ -189,77 +195,139 @@ void check_mesh_size(const TriangleMesh& mesh, std::size_t max_triangles) {
   }
 }
 
-void check_no_nested_parts(const TriangleMesh& mesh) {
-  const auto triangles = proper_triangles(mesh);
-  // Parts by shared edges, not vertices: parts that touch at a vertex only
-  // are distinct parts, and may nest.
-  std::vector<std::int32_t> parent(triangles.size());
-  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = std::int32_t(i);
-  std::map<Edge, std::int32_t> first_at;
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const auto [it, added] = first_at.emplace(std::minmax(triangles[t][std::size_t(k)], triangles[t][std::size_t((k + 1) % 3)]),
-                                                std::int32_t(t));
-      if (!added) parent[std::size_t(detail::find_root(parent, std::int32_t(t)))] = detail::find_root(parent, it->second);
+namespace {
+
+/// The closed parts of a mesh whose triangles are all proper (triangles
+/// joined by edges, not vertices: parts that touch at a vertex only are
+/// distinct parts, and may nest), and the winding number of each.
+class ClosedParts {
+ public:
+  ClosedParts(const TriangleMesh& mesh, const std::vector<std::array<std::int32_t, 3>>& triangles)
+      : mesh_(mesh), triangles_(triangles) {
+    std::vector<std::int32_t> parent(triangles.size());
+    for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = std::int32_t(i);
+    std::map<Edge, std::int32_t> first_at;
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+      for (int k = 0; k < 3; ++k) {
+        const auto [it, added] = first_at.emplace(
+            std::minmax(triangles[t][std::size_t(k)], triangles[t][std::size_t((k + 1) % 3)]), std::int32_t(t));
+        if (!added)
+          parent[std::size_t(detail::find_root(parent, std::int32_t(t)))] = detail::find_root(parent, it->second);
+      }
+    std::map<std::int32_t, std::size_t> index;
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      const auto [it, added] = index.emplace(detail::find_root(parent, std::int32_t(t)), parts_.size());
+      if (added) parts_.emplace_back();
+      Part& part = parts_[it->second];
+      part.triangles.push_back(t);
+      for (int k = 0; k < 3; ++k) part.lo = part.lo.cwiseMin(corner(t, k)), part.hi = part.hi.cwiseMax(corner(t, k));
     }
-  struct Part {
-    std::vector<std::size_t> triangles;
-    Vec3 lo = Vec3::Constant(INFINITY), hi = -Vec3::Constant(INFINITY);
-  };
-  std::map<std::int32_t, Part> parts;
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    Part& part = parts[detail::find_root(parent, std::int32_t(t))];
-    part.triangles.push_back(t);
-    for (std::int32_t i : triangles[t])
-      part.lo = part.lo.cwiseMin(mesh.vertices[std::size_t(i)]), part.hi = part.hi.cwiseMax(mesh.vertices[std::size_t(i)]);
   }
-  if (parts.size() < 2) return;
-  const auto corner = [&](std::size_t t, int k) -> const Vec3& {
-    return mesh.vertices[std::size_t(triangles[t][std::size_t(k)])];
-  };
-  // The winding number of a closed part at p: its triangles' solid angles
-  // (Van Oosterom and Strackee) over 4π; 1 inside an outward part, 0 outside.
-  const auto winding = [&](const Part& part, const Vec3& p) {
-    if ((p.array() < part.lo.array()).any() || (p.array() > part.hi.array()).any()) return 0.0;
+
+  std::size_t size() const { return parts_.size(); }
+  /// Indices into the triangles the parts were made of.
+  const std::vector<std::size_t>& triangles(std::size_t part) const { return parts_[part].triangles; }
+
+  /// Six times the volume the part encloses, negative when it faces inwards
+  /// (the origin at one of its corners, as in component_volumes).
+  double six_volume(std::size_t part) const {
+    const Vec3& o = corner(parts_[part].triangles.front(), 0);
     double sum = 0.0;
-    for (std::size_t t : part.triangles) {
+    for (std::size_t t : parts_[part].triangles)
+      sum += (corner(t, 0) - o).dot((corner(t, 1) - o).cross(corner(t, 2) - o));
+    return sum;
+  }
+
+  /// The part's winding number at p: its triangles' solid angles (Van
+  /// Oosterom and Strackee) over 4π; 1 inside an outward part, −1 inside an
+  /// inward one, 0 outside, 1/2 on a face.
+  double winding(std::size_t part, const Vec3& p) const {
+    const Part& q = parts_[part];
+    if ((p.array() < q.lo.array()).any() || (p.array() > q.hi.array()).any()) return 0.0;
+    double sum = 0.0;
+    for (std::size_t t : q.triangles) {
       const Vec3 a = corner(t, 0) - p, b = corner(t, 1) - p, c = corner(t, 2) - p;
       const double la = a.norm(), lb = b.norm(), lc = c.norm();
       sum += 2.0 * std::atan2(a.dot(b.cross(c)), la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la);
     }
     return sum / (4.0 * std::numbers::pi);
-  };
-  std::size_t nested = 0, example = 0;
-  for (const auto& [root, part] : parts) {
-    // The centroid of the part's largest triangle: away from its edges and
-    // corners, where another part may touch it.
-    std::size_t largest = part.triangles.front();
-    double largest_area = -1.0;
-    for (std::size_t t : part.triangles)
-      if (const double area = (corner(t, 1) - corner(t, 0)).cross(corner(t, 2) - corner(t, 0)).norm(); area > largest_area)
-        largest = t, largest_area = area;
-    const Vec3 p = (corner(largest, 0) + corner(largest, 1) + corner(largest, 2)) / 3.0;
-    double w = 0.0;
-    for (const auto& [other_root, other] : parts)
-      if (other_root != root) w += winding(other, p);
-    // Halfway between 0 and 1: p on another part's face (touching) counts
-    // one half, and is not inside it.
-    if (w > 0.75 && nested++ == 0) example = largest;
   }
+
+  /// The part's largest triangle: its centroid is a point of the part away
+  /// from its edges and corners, where another part may touch it.
+  std::size_t largest_triangle(std::size_t part) const {
+    std::size_t largest = parts_[part].triangles.front();
+    double largest_area = -1.0;
+    for (std::size_t t : parts_[part].triangles)
+      if (const double area = (corner(t, 1) - corner(t, 0)).cross(corner(t, 2) - corner(t, 0)).norm();
+          area > largest_area)
+        largest = t, largest_area = area;
+    return largest;
+  }
+
+  /// Whether the part lies inside another part, outward or inward (its
+  /// winding number's magnitude, at the largest triangle's centroid, over
+  /// 3/4: halfway between 1 inside and 1/2 on a face, so that a part
+  /// touching another is not inside it). Meaningful for parts that do not
+  /// cross: a part overlapping another has points inside it.
+  bool inside_another(std::size_t part, bool outward_only) const {
+    const std::size_t t = largest_triangle(part);
+    const Vec3 p = (corner(t, 0) + corner(t, 1) + corner(t, 2)) / 3.0;
+    for (std::size_t other = 0; other < parts_.size(); ++other)
+      if (other != part)
+        if (const double w = winding(other, p); outward_only ? w > 0.75 : std::abs(w) > 0.75) return true;
+    return false;
+  }
+
+ private:
+  struct Part {
+    std::vector<std::size_t> triangles;
+    Vec3 lo = Vec3::Constant(INFINITY), hi = -Vec3::Constant(INFINITY);
+  };
+  const Vec3& corner(std::size_t t, int k) const {
+    return mesh_.vertices[std::size_t(triangles_[t][std::size_t(k)])];
+  }
+  const TriangleMesh& mesh_;
+  const std::vector<std::array<std::int32_t, 3>>& triangles_;
+  std::vector<Part> parts_;
+};
+
+/// The parts of a closed, consistently oriented mesh that face inwards
+/// (a negative volume) though no other part encloses them: such a part is
+/// no cavity (a void lies inside the solid), but a surface wound the other
+/// way round, e.g. one patch of a CAD export or the whole of an inside-out
+/// one.
+std::vector<std::size_t> inward_parts_inside_no_other(const ClosedParts& parts) {
+  std::vector<std::size_t> out;
+  for (std::size_t k = 0; k < parts.size(); ++k)
+    if (parts.six_volume(k) < 0.0 && !parts.inside_another(k, false)) out.push_back(k);
+  return out;
+}
+
+}  // namespace
+
+void check_no_nested_parts(const TriangleMesh& mesh) {
+  const auto triangles = proper_triangles(mesh);
+  const ClosedParts parts(mesh, triangles);
+  if (parts.size() < 2) return;
+  std::size_t nested = 0, example = 0;
+  for (std::size_t k = 0; k < parts.size(); ++k)
+    if (parts.inside_another(k, true) && nested++ == 0) example = parts.largest_triangle(k);
   if (nested)
     throw InputError(fmt::format("the mesh has {} closed part(s) inside another part (e.g. the part of triangle {}, "
                                  "counted from 0), crossing nothing: such a part encloses the inside of the solid "
                                  "twice; remove it",
-                                 nested, [&] {
-                                   for (std::size_t k = 0; k < mesh.triangles.size(); ++k)
-                                     if (mesh.triangles[k] == triangles[example]) return k;
-                                   return example;
-                                 }()));
+                                 nested, mesh_index(mesh, triangles[example])));
 }
 
 void check_closed_mesh(const TriangleMesh& mesh, bool test_crossings) {
   const auto triangles = proper_triangles(mesh);
-  if (triangles.empty()) throw InputError("the mesh is empty: it has no triangle");
+  if (triangles.empty())
+    throw InputError(mesh.vertices.empty()
+                         ? std::string("the mesh is empty: it has no triangle")
+                         : fmt::format("the mesh is empty: it has no triangle, only {} vertices (a point cloud?); "
+                                       "skeletonize needs a closed surface: mesh the points first",
+                                       mesh.vertices.size()));
   check_edges(triangles, mesh.triangles.size() - triangles.size());
   for (const auto& t : triangles)
     for (std::int32_t i : t)
@@ -268,13 +336,25 @@ void check_closed_mesh(const TriangleMesh& mesh, bool test_crossings) {
   const std::vector<double> volumes = component_volumes(mesh, triangles);
   double total = 0.0;
   for (double v : volumes) total += v;
-  if (!(total > 0.0))
-    throw InputError("the mesh is inside out: its triangles face inwards (enclosed volume is negative); flip them");
+  const auto inside_out = [] {
+    return InputError("the mesh is inside out: its triangles face inwards (enclosed volume is negative); flip them");
+  };
   const auto negative = std::count_if(volumes.begin(), volumes.end(), [](double v) { return v < 0.0; });
-  if (negative)
-    throw InputError(fmt::format("the mesh has {} inward-facing part(s), i.e. cavities inside the solid; cavities "
-                                 "are not supported",
-                                 negative));
+  if (!(total > 0.0) && (negative == 0 || std::size_t(negative) == volumes.size())) throw inside_out();
+  if (negative) {
+    const ClosedParts parts(mesh, triangles);
+    if (const auto wound = inward_parts_inside_no_other(parts); !wound.empty())
+      throw InputError(fmt::format("the mesh has {} inward-facing part(s) that lie inside no other part (e.g. the "
+                                   "part of triangle {}, counted from 0): their triangles are wound the other way "
+                                   "round; flip them",
+                                   wound.size(), mesh_index(mesh, triangles[parts.triangles(wound.front()).front()])));
+    if (!(total > 0.0)) throw inside_out();
+    std::size_t inward = 0;
+    for (std::size_t k = 0; k < parts.size(); ++k) inward += parts.six_volume(k) < 0.0;
+    throw InputError(fmt::format("the mesh has {} inward-facing part(s) inside other parts, i.e. cavities inside "
+                                 "the solid; cavities are not supported",
+                                 inward));
+  }
   check_position(mesh, triangles);
   if (test_crossings) check_no_self_intersection(mesh), check_no_nested_parts(mesh);
 }
@@ -388,19 +468,91 @@ bool has_holes_or_non_manifold_edges(const TriangleMesh& mesh) {
 
 namespace {
 
-/// Flips every triangle of a closed, consistently oriented `mesh` whose
-/// parts all enclose a negative volume (exported with the other winding
-/// convention), and returns how many it flipped; 0 for any other mesh. A
-/// mesh with some parts inward and some outward is left alone: an inward
-/// part may be a cavity, which check_closed_mesh names.
-std::size_t flip_if_inside_out(TriangleMesh& mesh) {
+/// Turns round the triangles of `mesh` that disagree with their
+/// neighbours: across every edge of two triangles one must run a → b and
+/// the other b → a. Each connected part keeps the orientation of its first
+/// triangle in the file's order (which side is out is decided after, by
+/// the enclosed volume: flip_inward_parts). Returns how many triangles it
+/// turned; throws InputError for a part that no orientation makes
+/// consistent (a Möbius band). Edges of more than two triangles are
+/// ignored: the caller orients only meshes without them.
+std::size_t orient_consistently(TriangleMesh& mesh) {
+  std::vector<std::size_t> in_mesh;  // the proper triangles' indices in the mesh
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (const auto& c = mesh.triangles[t]; c[0] != c[1] && c[1] != c[2] && c[2] != c[0]) in_mesh.push_back(t);
+  // Per edge (lower vertex first), its triangles and whether each runs
+  // from the lower vertex to the higher.
+  std::map<Edge, std::vector<std::pair<std::size_t, bool>>> at_edge;
+  for (std::size_t t = 0; t < in_mesh.size(); ++t) {
+    const auto& c = mesh.triangles[in_mesh[t]];
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t a = c[std::size_t(k)], b = c[std::size_t((k + 1) % 3)];
+      at_edge[std::minmax(a, b)].emplace_back(t, a < b);
+    }
+  }
+  std::vector<std::vector<std::pair<std::size_t, bool>>> neighbours(in_mesh.size());  // (u, same direction)
+  for (const auto& [edge, uses] : at_edge)
+    if (uses.size() == 2) {
+      const bool same = uses[0].second == uses[1].second;
+      neighbours[uses[0].first].emplace_back(uses[1].first, same);
+      neighbours[uses[1].first].emplace_back(uses[0].first, same);
+    }
+  // Breadth first from each part's first triangle: a neighbour that runs
+  // the shared edge the same way is flipped relative to its finder.
+  constexpr std::uint8_t unseen = 2;
+  std::vector<std::uint8_t> flip(in_mesh.size(), unseen);
+  std::vector<std::size_t> queue;
+  for (std::size_t seed = 0; seed < in_mesh.size(); ++seed) {
+    if (flip[seed] != unseen) continue;
+    flip[seed] = 0;
+    queue.assign(1, seed);
+    for (std::size_t next = 0; next < queue.size(); ++next) {
+      const std::size_t t = queue[next];
+      for (const auto& [u, same] : neighbours[t]) {
+        const std::uint8_t wanted = flip[t] ^ std::uint8_t(same);
+        if (flip[u] == unseen) {
+          flip[u] = wanted;
+          queue.push_back(u);
+        } else if (flip[u] != wanted) {
+          throw InputError(fmt::format("the mesh is not orientable: the part of triangle {} (counted from 0) has no "
+                                       "consistent orientation (a Möbius band); it bounds no solid",
+                                       in_mesh[seed]));
+        }
+      }
+    }
+  }
+  std::size_t turned = 0;
+  for (std::size_t t = 0; t < in_mesh.size(); ++t)
+    if (flip[t] == 1) std::swap(mesh.triangles[in_mesh[t]][1], mesh.triangles[in_mesh[t]][2]), ++turned;
+  return turned;
+}
+
+/// Turns round the parts of a closed, consistently oriented `mesh` that
+/// face inwards though no other part encloses them
+/// (inward_parts_inside_no_other: every part of an inside-out export, or
+/// one patch wound the other way), and says how many triangles and parts it
+/// flipped; nothing for any other mesh. An inward part inside another may be
+/// a cavity, which check_closed_mesh names.
+std::pair<std::size_t, std::size_t> flip_inward_parts(TriangleMesh& mesh) {
   const auto triangles = proper_triangles(mesh);
   const EdgeCounts edges = count_edges(triangles);
-  if (triangles.empty() || edges.open || edges.non_manifold || edges.inconsistent) return 0;
+  if (triangles.empty() || edges.open || edges.non_manifold || edges.inconsistent) return {0, 0};
   const std::vector<double> volumes = component_volumes(mesh, triangles);
-  if (!std::all_of(volumes.begin(), volumes.end(), [](double v) { return v < 0.0; })) return 0;
-  for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
-  return triangles.size();
+  if (std::none_of(volumes.begin(), volumes.end(), [](double v) { return v < 0.0; })) return {0, 0};
+  const ClosedParts parts(mesh, triangles);
+  const auto wound = inward_parts_inside_no_other(parts);
+  // The proper triangles' indices in the mesh, in order.
+  std::vector<std::size_t> in_mesh;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (const auto& c = mesh.triangles[t]; c[0] != c[1] && c[1] != c[2] && c[2] != c[0]) in_mesh.push_back(t);
+  std::size_t flipped = 0;
+  for (std::size_t k : wound)
+    for (std::size_t t : parts.triangles(k)) {
+      auto& c = mesh.triangles[in_mesh[t]];
+      std::swap(c[1], c[2]);
+      ++flipped;
+    }
+  return {flipped, wound.size()};
 }
 
 }  // namespace
@@ -413,8 +565,15 @@ void check_closed_mesh_offering_repair(const TriangleMesh& mesh, std::string_vie
   try {
     check_closed_mesh(mesh, false);
   } catch (const InputError& error) {
+    if (const EdgeCounts c = count_edges(proper_triangles(mesh)); c.inconsistent && !c.non_manifold) {
+      TriangleMesh oriented = mesh;
+      orient_consistently(oriented);  // throws for a Möbius band
+      throw offer(error, "orient its triangles consistently");
+    }
     if (has_holes_or_non_manifold_edges(mesh)) throw offer(error, "split non-manifold edges and fill holes");
-    if (TriangleMesh flipped = mesh; flip_if_inside_out(flipped) > 0) throw offer(error, "turn it round");
+    TriangleMesh flipped = mesh;
+    if (const std::size_t n = flip_inward_parts(flipped).first; n > 0)
+      throw offer(error, n == proper_triangles(mesh).size() ? "turn it round" : "turn those parts round");
     throw;
   }
   try {
@@ -429,12 +588,23 @@ void check_closed_mesh_offering_repair(const TriangleMesh& mesh, std::string_vie
 
 InputRepair check_closed_mesh_repairing(TriangleMesh& mesh, double max_hole_area) {
   InputRepair repair;
-  const auto triangles = proper_triangles(mesh);
-  const EdgeCounts edges = count_edges(triangles);
+  auto triangles = proper_triangles(mesh);
+  EdgeCounts edges = count_edges(triangles);
+  // Triangles flipped against their neighbours (a shuffled export): each
+  // part is oriented from its first triangle, and the parts then facing
+  // inwards are turned round below. At an edge of more than two triangles
+  // which ones are neighbours is not known.
+  if (edges.inconsistent && !edges.non_manifold) {
+    repair.surface.triangles_reoriented = orient_consistently(mesh);
+    triangles = proper_triangles(mesh);
+    edges = count_edges(triangles);
+  }
   if (edges.open > 0 || edges.non_manifold > 0) {
     // A flipped triangle's edges would be split like non-manifold ones and
-    // the holes left filled: the orientation is the user's to fix.
-    if (edges.inconsistent) throw InputError(inconsistent_problem(edges) + " (--repair does not flip single triangles)");
+    // the holes left filled: the orientation is the user's to fix there.
+    if (edges.inconsistent)
+      throw InputError(inconsistent_problem(edges) +
+                       " (--repair orients triangles only where no edge has more than two)");
     for (const auto& t : triangles)
       for (std::int32_t i : t)
         if (i < 0 || std::size_t(i) >= mesh.vertices.size())
@@ -494,7 +664,7 @@ InputRepair check_closed_mesh_repairing(TriangleMesh& mesh, double max_hole_area
             edges.non_manifold, example_edge(edges.first_non_manifold), s.vertices_split, found.pairs, found.first,
             found.second));
   }
-  repair.surface.triangles_flipped = flip_if_inside_out(mesh);
+  std::tie(repair.surface.triangles_flipped, repair.surface.parts_flipped) = flip_inward_parts(mesh);
   repair.overlaps = check_closed_mesh_joining_overlaps(mesh);
   return repair;
 }

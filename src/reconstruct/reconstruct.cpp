@@ -161,11 +161,16 @@ class Stopwatch {
 
 /// The `ball` stage: one point primitive per connected component of the
 /// surface, its least-squares sphere (ball_fit.hpp), on area-weighted
-/// points about 1/32 of the diagonal apart.
-Stage ball_stage(const TriangleMesh& surface) {
+/// points about 1/32 of the diagonal apart. A sphere wider than the whole
+/// surface is no ball of it: a flat part's gets the sphere about its
+/// centroid instead (as a point primitive the least-squares one put a CAD
+/// patch's centre 2 diagonals outside the input's box, a surface no
+/// measuring mesh could cover), and `flat` (if set) counts those.
+Stage ball_stage(const TriangleMesh& surface, std::size_t* flat = nullptr) {
   Stage stage;
   stage.name = "ball";
-  stage.balls = fit_component_spheres(surface, bounding_diagonal(surface.vertices) / 32);
+  const double diagonal = bounding_diagonal(surface.vertices);
+  stage.balls = fit_component_spheres(surface, diagonal / 32, diagonal, flat);
   stage.points = stage.balls.size();
   return stage;
 }
@@ -220,12 +225,14 @@ bool curve_stages(MedialGraph graph, const TriangleMesh& surface, const Reconstr
     // No curve skeleton: the shape is a ball or a blob. The stages without
     // a primitive cannot be meshed, so they go; the ball is the result.
     std::erase_if(result.stages, [&o](const Stage& s) { return primitive_counts(s, o).total() == 0; });
-    result.stages.push_back(ball_stage(surface));
+    std::size_t flat = 0;
+    result.stages.push_back(ball_stage(surface, &flat));
     result.stages.back().seconds = clock.lap();
     const Vec4& ball = result.stages.back().balls.front();
-    say(o, fmt::format("no branch left: {} point primitive(s), the least-squares sphere of each part; the first at "
-                       "({:.4g}, {:.4g}, {:.4g}), radius {:.4g}", result.stages.back().balls.size(), ball.x(), ball.y(),
-                       ball.z(), ball.w()));
+    say(o, fmt::format("no branch left: {} point primitive(s), the least-squares sphere of each part{}; the first at "
+                       "({:.4g}, {:.4g}, {:.4g}), radius {:.4g}", result.stages.back().balls.size(),
+                       flat ? fmt::format(" ({} flat: the sphere about its centroid)", flat) : std::string(), ball.x(),
+                       ball.y(), ball.z(), ball.w()));
     return true;
   }
   result.tolerance = o.epsilon * skeleton_size(pruned);
@@ -260,20 +267,19 @@ bool curve_stages(MedialGraph graph, const TriangleMesh& surface, const Reconstr
   // distances, cheap); the better one is the result.
   const double diagonal = bounding_diagonal(surface.vertices);
   const std::vector<WeightedPoint> points = area_weighted_points(surface, diagonal / 32);
-  Stage ball = ball_stage(surface);
+  std::size_t flat = 0;
+  Stage ball = ball_stage(surface, &flat);
   result.stages.back().balls = balls_missed(result.stages.back(), ball.balls);
   result.stages.back().points += result.stages.back().balls.size();
   if (!result.stages.back().balls.empty())
     say(o, fmt::format("{} part(s) of the surface hold no branch: one point primitive each", result.stages.back().balls.size()));
   const double curve_error = first_order_rms(parse_skeleton_json(skeleton_file_text(result.stages.back(), o)), points, diagonal);
   const double ball_error = first_order_rms(parse_skeleton_json(skeleton_file_text(ball, o)), points, diagonal);
-  // A least-squares sphere wider than the whole surface is no ball of it:
-  // on a long, flat part Gauss–Newton drifts towards a plane (CGAL's camel:
-  // a radius of about 1,400 diagonals, closer than its branches by the
-  // first-order distance, and a ball the report could not mesh).
-  const bool balls_fit = std::all_of(ball.balls.begin(), ball.balls.end(), [diagonal](const Vec4& b) {
-    return b.w() <= diagonal;
-  });
+  // A part whose least-squares sphere is wider than the whole surface is
+  // not ball-shaped (CGAL's camel: a radius of about 1,400 diagonals,
+  // closer than its branches by the first-order distance): the branches
+  // stay.
+  const bool balls_fit = flat == 0;
   if (!balls_fit)
     say(o, "a least-squares sphere is wider than the surface's diagonal: no ball, the branches stay");
   if (balls_fit && ball_error < curve_error) {

@@ -13,6 +13,7 @@
 // normal equations of the linearised residuals.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "skelconv/mesh/triangle_mesh.hpp"
@@ -43,8 +44,13 @@ std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& poi
 /// One least-squares sphere per connected component of `mesh` (triangles
 /// sharing a vertex), in the order of each component's first triangle,
 /// each from its area-weighted points at spacing h, starting from their
-/// centroid.
-std::vector<Vec4> fit_component_spheres(const TriangleMesh& mesh, double h);
+/// centroid. Where that sphere is wider than `max_radius` (a flat part:
+/// Gauss–Newton drifts towards its plane, the centre far outside the
+/// input), the component gets the sphere about its points' centroid at
+/// their mean distance instead, and `flat` (if set) counts it.
+std::vector<Vec4> fit_component_spheres(const TriangleMesh& mesh, double h,
+                                        double max_radius = std::numeric_limits<double>::infinity(),
+                                        std::size_t* flat = nullptr);
 
 /// The least-squares sphere (x, y, z, radius) of `points`, starting from
 /// centre `start`. At most `iterations` Gauss–Newton steps; stops when a

@@ -33,7 +33,9 @@ std::size_t merge_coincident_vertices(TriangleMesh& mesh);
 /// - non-manifold: an edge used by more than two triangles;
 /// - inconsistently oriented: an edge used twice in the same direction;
 /// - inside out: a negative enclosed volume;
-/// - a cavity: a connected component with negative volume inside the others;
+/// - a part wound the other way: a closed part with negative volume that
+///   lies inside no other part;
+/// - a cavity: a closed part with negative volume inside another;
 /// - too far from the origin for its size: a diagonal below 1e5 ×
 ///   Segment::degenerate_length_ratio × its largest coordinate magnitude
 ///   (the skeleton's shortest pieces, down to ~5e-5 of the diagonal, could
@@ -101,7 +103,7 @@ bool has_holes_or_non_manifold_edges(const TriangleMesh& mesh);
 
 /// check_closed_mesh for a caller that offers check_closed_mesh_repairing as
 /// an option: where the problem is one the repair fixes (holes, edges of more
-/// than two triangles, an inside-out surface, crossing triangles), the message ends "(or pass
+/// than two triangles, an inside-out surface or part, crossing triangles), the message ends "(or pass
 /// OPTION to let skeletonize ...)", OPTION in the caller's spelling
 /// ("--repair" for the command, "repair=True" for Python).
 void check_closed_mesh_offering_repair(const TriangleMesh& mesh, std::string_view repair_option);
@@ -142,11 +144,18 @@ struct SurfaceRepair {
   std::size_t triangles_added = 0;
   std::size_t vertices_added = 0;  ///< inside the patches
   double largest_hole_area = 0.0;  ///< the largest patch's area / the closed surface's area
-  /// Triangles turned round because every part of the closed surface faced
-  /// inwards (an inside-out export); 0 otherwise.
+  /// Triangles turned round, of parts of the closed surface that faced
+  /// inwards though no other part enclosed them (an inside-out export, or a
+  /// patch wound the other way); 0 otherwise.
   std::size_t triangles_flipped = 0;
+  std::size_t parts_flipped = 0;  ///< the parts those triangles made
+  /// Triangles turned round first, to agree with their neighbours'
+  /// orientation (each part oriented from its first triangle).
+  std::size_t triangles_reoriented = 0;
   bool repaired() const {
-    return non_manifold_edges + boundary_edges + isolated_vertices_removed + triangles_flipped > 0;
+    return non_manifold_edges + boundary_edges + isolated_vertices_removed + triangles_flipped +
+               triangles_reoriented >
+           0;
   }
 };
 
@@ -166,6 +175,10 @@ inline constexpr double max_hole_area_fraction = 0.25;
 /// check_closed_mesh_joining_overlaps, after closing an open or
 /// edge-non-manifold surface (`skelconv skeletonize --repair`;
 /// docs/reconstruction_input.md, "Open and non-manifold meshes"):
+/// 0. where no edge has more than two triangles, the triangles that run an
+///    edge the same way as their neighbour are turned round, each part
+///    oriented from its first triangle (a part with no consistent
+///    orientation, a Möbius band, is refused);
 /// 1. an edge of 2m triangles becomes m edges of two, each pair bounding
 ///    one wedge of the solid around it, and each vertex whose triangles
 ///    form several fans gets one copy per fan;
@@ -177,11 +190,14 @@ inline constexpr double max_hole_area_fraction = 0.25;
 ///    that vertex again; copies at a split edge stay (vertices_split), and
 ///    if the split sheets cross, the mesh is refused (CGAL's union crashed
 ///    on distinct vertices at one position);
-/// 4. a closed surface whose every part faces inwards (negative enclosed
-///    volume: exported with the other winding convention) is turned round;
+/// 4. every part that faces inwards (negative enclosed volume) and lies
+///    inside no other part is turned round (an export with the other
+///    winding convention, a patch wound the other way, a part oriented
+///    from an inward first triangle in step 0);
 /// 5. then crossings as check_closed_mesh_joining_overlaps (a patch, or
 ///    the input, can cross the surface), and every check again.
-/// Throws InputError for an inconsistent orientation (not repaired), when
+/// Throws InputError for an inconsistent orientation at a non-manifold
+/// edge (not repaired), when
 /// the split or the hole filling fails, and for a hole whose patch is more
 /// than `max_hole_area` of the closed surface's area, naming its size: an
 /// opening that large is a shape left open, and a patch would invent a

@@ -8,6 +8,9 @@ PLY) into the current directory; standard library only, same bytes each run:
                            parts that a sum of fields would fuse
   sphere_open.ply          sphere.ply without the triangles whose centroid is within 25 degrees of the
                            pole (0, 0, 1): an open mesh of one hole, for `skeletonize --repair`
+  sphere_and_shell.ply     sphere.ply and, beside it, a small thin curved shell: a square 0.6 across and 0.01
+                           thick, bent to a sphere of radius 50 (4 x 4 vertices a side), centred at (2, 0, 0):
+                           a flat part whose least-squares sphere is far wider than the whole input
 """
 import math
 
@@ -72,6 +75,38 @@ def main():
     renumber = {v: k for k, v in enumerate(used)}
     write("sphere_open.ply", [V[i] for i in used], [tuple(renumber[i] for i in t) for t in kept],
           "sphere.ply without a polar cap of 25 degrees (the vertices of no triangle left out): one hole")
+
+    shell, SF = thin_shell(50.0, 0.6, 0.01, 4, (2.0, 0.0, 0.0))
+    write("sphere_and_shell.ply", V + shell, F + [tuple(i + len(V) for i in t) for t in SF],
+          "sphere.ply and a thin shell 0.6 across, 0.01 thick, bent to radius 50, at (2, 0, 0): a flat part")
+
+
+def thin_shell(R, width, thickness, n, c):
+    """A closed shell: two n x n grids over a square `width` across, on the spheres of radius R -/+ thickness/2
+    about c - (0, 0, R) (the upper facing up, the lower down), joined at their rims; outward."""
+    g = [-width / 2 + width * k / (n - 1) for k in range(n)]
+    V, F = [], []
+    for offset in (thickness / 2, -thickness / 2):
+        for x in g:
+            for y in g:
+                V.append((c[0] + x, c[1] + y, c[2] + math.sqrt(R * R - x * x - y * y) - R + offset))
+
+    def vid(layer, i, j):
+        return layer * n * n + i * n + j
+
+    for i in range(n - 1):
+        for j in range(n - 1):
+            a, b, cc, d = vid(0, i, j), vid(0, i + 1, j), vid(0, i + 1, j + 1), vid(0, i, j + 1)
+            F += [(a, b, cc), (a, cc, d)]
+            a, b, cc, d = vid(1, i, j), vid(1, i + 1, j), vid(1, i + 1, j + 1), vid(1, i, j + 1)
+            F += [(a, cc, b), (a, d, cc)]
+    rim = ([(i, 0) for i in range(n - 1)] + [(n - 1, j) for j in range(n - 1)] +
+           [(i, n - 1) for i in range(n - 1, 0, -1)] + [(0, j) for j in range(n - 1, 0, -1)])
+    for k in range(len(rim)):
+        (i0, j0), (i1, j1) = rim[k], rim[(k + 1) % len(rim)]
+        a, b, cc, d = vid(0, i0, j0), vid(0, i1, j1), vid(1, i1, j1), vid(1, i0, j0)
+        F += [(a, d, cc), (a, cc, b)]
+    return V, F
 
 
 if __name__ == "__main__":
