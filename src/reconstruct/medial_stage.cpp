@@ -13,6 +13,7 @@
 #include <unordered_map>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "skelconv/mesh/bounding_region.hpp"
 #include "skelconv/mesh/mesh_topology.hpp"
@@ -127,21 +128,89 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
       if (const double d = part_queries[p].signed_distance(point); d > deepest) deepest = d, best = std::int32_t(p);
     return best;
   };
-  // The simplified medial mesh, its tube ends extended; `inside_samples`
-  // as QuadricOptions's.
-  const auto medial_mesh = [&](int inside_samples) {
+  // With several parts, each part's medial graph is simplified alone
+  // under its own share of the budget (medial_parts.hpp, part_budgets).
+  std::vector<double> areas(part_total, 0.0);
+  std::vector<std::size_t> shares{m.budget};
+  if (part_total > 1) {
+    for (std::size_t p = 0; p < part_total; ++p)
+      for (const auto& t : part_surfaces[p].triangles) {
+        const Vec3& a = part_surfaces[p].vertices[std::size_t(t[0])];
+        areas[p] += 0.5 * (part_surfaces[p].vertices[std::size_t(t[1])] - a)
+                              .cross(part_surfaces[p].vertices[std::size_t(t[2])] - a)
+                              .norm();
+      }
+    shares = part_budgets(areas, m.budget, m.part_minimum_budget);
+  }
+  // The simplified medial mesh of `g`, its tube ends extended, at most
+  // `budget` primitives; `inside_samples` as QuadricOptions's.
+  const auto simplified = [&](const MedialGraph& g, std::size_t budget, int inside_samples, QuadricReport& q,
+                              std::size_t& spikes) {
     QuadricOptions options = quadric;
+    options.budget = budget;
     options.inside_samples = inside_samples;
     options.inside_tolerance = 0.5 * diagonal / o.measure_divisions;
-    QuadricReport q;
-    MedialMesh mesh = quadric_medial_mesh(graph, options, &q);
-    std::size_t spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach, quadric.depth);
+    MedialMesh mesh = quadric_medial_mesh(g, options, &q);
+    spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach, quadric.depth);
     // Each tube end got one more edge: simplified further where that
     // overruns the budget.
-    while (primitives(mesh) > m.budget && options.budget > 1) {
-      options.budget -= std::min(options.budget - 1, primitives(mesh) - m.budget);
-      mesh = quadric_medial_mesh(graph, options, &q);
+    while (primitives(mesh) > budget && options.budget > 1) {
+      options.budget -= std::min(options.budget - 1, primitives(mesh) - budget);
+      mesh = quadric_medial_mesh(g, options, &q);
       spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach, quadric.depth);
+    }
+    return mesh;
+  };
+  const auto medial_mesh = [&](int inside_samples) {
+    std::vector<std::size_t> budgets = shares;
+    QuadricReport q;
+    std::size_t spikes = 0;
+    MedialMesh mesh;
+    if (part_total == 1) {
+      mesh = simplified(graph, m.budget, inside_samples, q, spikes);
+    } else {
+      const std::vector<std::int32_t> graph_parts = vertex_parts(graph);
+      std::vector<MedialGraph> graphs;
+      for (std::size_t p = 0; p < part_total; ++p) graphs.push_back(medial_graph_part(graph, graph_parts, std::int32_t(p)));
+      std::vector<MedialMesh> meshes(part_total);
+      std::vector<QuadricReport> reports(part_total);
+      std::vector<std::size_t> part_spikes(part_total, 0), done_at(part_total, 0);
+      std::vector<bool> settled(part_total, false);
+      // The link condition may hold a part above its share (a sheet's
+      // loops): it keeps what it holds, and the parts not yet over theirs
+      // share out what is left, until none is over.
+      for (std::size_t pass = 0; pass < part_total; ++pass) {
+        for (std::size_t p = 0; p < part_total; ++p)
+          if (!settled[p] && (pass == 0 || done_at[p] != budgets[p])) {
+            meshes[p] = simplified(graphs[p], budgets[p], inside_samples, reports[p], part_spikes[p]);
+            done_at[p] = budgets[p];
+          }
+        std::size_t held = 0;
+        bool over = false;
+        for (std::size_t p = 0; p < part_total; ++p)
+          if (settled[p] || primitives(meshes[p]) > budgets[p]) {
+            over = over || !settled[p];
+            settled[p] = true;
+            held += primitives(meshes[p]);
+          }
+        if (!over) break;
+        std::vector<double> rest_areas;
+        for (std::size_t p = 0; p < part_total; ++p)
+          if (!settled[p]) rest_areas.push_back(areas[p]);
+        const std::vector<std::size_t> rest =
+            part_budgets(rest_areas, m.budget > held ? m.budget - held : 0, m.part_minimum_budget);
+        for (std::size_t p = 0, k = 0; p < part_total; ++p)
+          if (!settled[p]) budgets[p] = rest[k++];
+      }
+      for (std::size_t p = 0; p < part_total; ++p) {
+        const QuadricReport& pr = reports[p];
+        spikes += part_spikes[p];
+        q.collapses += pr.collapses, q.refused_by_link += pr.refused_by_link;
+        q.loops_closed += pr.loops_closed, q.loops_closed_inside += pr.loops_closed_inside;
+        q.bridges_closed += pr.bridges_closed;
+        q.euler_before += pr.euler_before, q.euler_after += pr.euler_after;
+      }
+      mesh = joined_part_meshes(meshes);
     }
     if (o.progress)
       o.progress(fmt::format("medial mesh: {} spheres, {} triangles, {} tube edges, {} isolated spheres (budget {} "
@@ -157,17 +226,12 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     if (o.progress && spikes > 0)
       o.progress(fmt::format("medial mesh: {} spikes' spheres beyond their ends moved back to the input's surface",
                              spikes));
-    if (part_total > 1) {
-      for (const Vec4& sphere : mesh.spheres) mesh.parts.push_back(part_of(sphere.head<3>()));
-      std::size_t mixed = 0;
-      for (const auto& edge : mesh.edges) mixed += mesh.parts[std::size_t(edge[0])] != mesh.parts[std::size_t(edge[1])];
-      for (const auto& t : mesh.triangles)
-        mixed += mesh.parts[std::size_t(t[0])] != mesh.parts[std::size_t(t[1])] ||
-                 mesh.parts[std::size_t(t[0])] != mesh.parts[std::size_t(t[2])];
-      if (o.progress)
-        o.progress(fmt::format("medial mesh: {} parts of the input, each its own sum of fields, joined by a union "
-                               "({} edges and triangles join spheres of two parts)",
-                               part_total, mixed));
+    if (part_total > 1 && o.progress) {
+      std::vector<std::size_t> held(part_total, 0);
+      for (std::size_t p = 0; p < part_total; ++p) held[p] = primitives(medial_mesh_part(mesh, std::int32_t(p)));
+      o.progress(fmt::format("medial mesh: {} parts of the input, each simplified alone and its own sum of fields, "
+                             "joined by a union; budgets {}, primitives {}",
+                             part_total, fmt::join(budgets, " "), fmt::join(held, " ")));
     }
     return mesh;
   };
