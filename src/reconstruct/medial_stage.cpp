@@ -166,10 +166,27 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     std::vector<std::size_t> budgets = shares;
     QuadricReport q;
     std::size_t spikes = 0;
-    MedialMesh mesh;
-    if (part_total == 1) {
-      mesh = simplified(graph, m.budget, inside_samples, q, spikes);
-    } else {
+    // The single simplification first; with several parts, each sphere
+    // given the part its centre is deepest in. Where it leaves every part
+    // at least its minimum it is kept (the shares would only reorder the
+    // same spheres: the fit, which sums the primitives in the file's
+    // order, may then end elsewhere: the close balls fused once so).
+    MedialMesh mesh = simplified(graph, m.budget, inside_samples, q, spikes);
+    bool starved = false;
+    std::size_t mixed = 0;
+    if (part_total > 1) {
+      for (const Vec4& sphere : mesh.spheres) mesh.parts.push_back(part_of(sphere.head<3>()));
+      for (const auto& edge : mesh.edges) mixed += mesh.parts[std::size_t(edge[0])] != mesh.parts[std::size_t(edge[1])];
+      for (const auto& t : mesh.triangles)
+        mixed += mesh.parts[std::size_t(t[0])] != mesh.parts[std::size_t(t[1])] ||
+                 mesh.parts[std::size_t(t[0])] != mesh.parts[std::size_t(t[2])];
+      const std::size_t floor_share = std::min(m.part_minimum_budget, m.budget / part_total);
+      for (std::size_t p = 0; p < part_total; ++p)
+        starved = starved || primitives(medial_mesh_part(mesh, std::int32_t(p))) < floor_share;
+    }
+    if (starved) {
+      q = QuadricReport{};
+      spikes = 0;
       const std::vector<std::int32_t> graph_parts = vertex_parts(graph);
       std::vector<MedialGraph> graphs;
       for (std::size_t p = 0; p < part_total; ++p) graphs.push_back(medial_graph_part(graph, graph_parts, std::int32_t(p)));
@@ -230,9 +247,15 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     if (part_total > 1 && o.progress) {
       std::vector<std::size_t> held(part_total, 0);
       for (std::size_t p = 0; p < part_total; ++p) held[p] = primitives(medial_mesh_part(mesh, std::int32_t(p)));
-      o.progress(fmt::format("medial mesh: {} parts of the input, each simplified alone and its own sum of fields, "
-                             "joined by a union; budgets {}, primitives {}",
-                             part_total, fmt::join(budgets, " "), fmt::join(held, " ")));
+      if (starved)
+        o.progress(fmt::format("medial mesh: {} parts of the input, a part under its minimum in one simplification: "
+                               "each simplified alone and its own sum of fields, joined by a union; budgets {}, "
+                               "primitives {}",
+                               part_total, fmt::join(budgets, " "), fmt::join(held, " ")));
+      else
+        o.progress(fmt::format("medial mesh: {} parts of the input, each its own sum of fields, joined by a union "
+                               "({} edges and triangles join spheres of two parts; primitives {})",
+                               part_total, mixed, fmt::join(held, " ")));
     }
     return mesh;
   };
