@@ -108,10 +108,11 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   };
   quadric.overhang = m.merged_overhang * diagonal;
   // The closed parts of the input (medial_parts.hpp): with more than one,
-  // each sphere belongs to the part whose graph it was simplified from
-  // (below), each fit point to the part whose surface it was sampled on,
-  // each inside point to the part it lies deepest in (largest signed
-  // distance), and the skeleton sums each part's primitives apart.
+  // each sphere and inside point belongs to the part it lies deepest in
+  // (largest signed distance; a sphere, where the budget is shared out per
+  // part, to the part whose graph it was simplified from), each fit point
+  // to the part whose surface it was sampled on, and the skeleton sums
+  // each part's primitives apart.
   const std::vector<std::int32_t> triangle_part = triangle_parts(surface);
   const std::size_t part_total =
       triangle_part.empty() ? 1 : std::size_t(*std::max_element(triangle_part.begin(), triangle_part.end())) + 1;

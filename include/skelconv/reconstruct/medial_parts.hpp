@@ -31,8 +31,10 @@ std::size_t part_count(const MedialMesh& mesh);
 /// The part of a medial edge or triangle made of `spheres`: the part most
 /// of them are in, the first sphere's on a tie. (An element across two
 /// parts would join one part's sum and reach into the other; medial_stage
-/// makes none, each part's graph being simplified alone.) 0 when
-/// `mesh.parts` is empty.
+/// counts them in its progress line where it keeps the single
+/// simplification: none on the two close balls of
+/// tests/data/reconstruct/spheres_close.ply; a part simplified alone makes
+/// none.) 0 when `mesh.parts` is empty.
 std::int32_t element_part(const MedialMesh& mesh, std::span<const std::int32_t> spheres);
 
 /// `mesh` with only the edges, triangles and isolated spheres of part
