@@ -2,13 +2,18 @@
 // part's primitives are summed apart and the sums joined by a union, so two
 // balls of different parts closer than their fields reach stay two, where
 // one sum of all the fields fuses them; and the fit measures each point
-// against its own part's sum.
+// against its own part's sum. The medial graph of each part is simplified
+// under its own share of the budget, so that a small part next to a large
+// one keeps enough primitives to hold its shape.
 #include <cmath>
+#include <filesystem>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "skelconv/mesh/mesh_reader.hpp"
 #include "skelconv/mesh/mesh_topology.hpp"
 #include "skelconv/reconstruct/medial_fit.hpp"
 #include "skelconv/reconstruct/medial_parts.hpp"
@@ -188,6 +193,98 @@ TEST(MedialParts, TrianglePartsAndElementParts) {
   EXPECT_EQ(zero.edges.size() + one.edges.size(), 2u);
   EXPECT_EQ(one.triangles.size(), 1u);
   EXPECT_TRUE(zero.parts.empty());
+}
+
+TEST(MedialParts, BudgetIsSharedOutWithAMinimumPerPart) {
+  // Weights 100, 1, 1, 1, budget 100, minimum 10: 10 each, and the rest,
+  // 60, to the only part that wants more than the minimum (its share of
+  // the whole, 100 × 100 / 103 = 97.1, is above it; the others' 0.97 not).
+  const std::vector<double> one_large{100, 1, 1, 1};
+  EXPECT_EQ(part_budgets(one_large, 100, 10), (std::vector<std::size_t>{70, 10, 10, 10}));
+  // Four equal parts, budget 10, minimum 20: an equal share of 2 each,
+  // the 2 left over (0.5 each wanted) to the first two on the tie.
+  const std::vector<double> equal{1, 1, 1, 1};
+  EXPECT_EQ(part_budgets(equal, 10, 20), (std::vector<std::size_t>{3, 3, 2, 2}));
+  // Weights 3 and 1, budget 100, minimum 10: in proportion, 75 and 25
+  // (both above the minimum).
+  const std::vector<double> three_to_one{3, 1};
+  EXPECT_EQ(part_budgets(three_to_one, 100, 10), (std::vector<std::size_t>{75, 25}));
+  // The whole budget, never more, however the weights fall (the shares
+  // wanted beyond the minimum add up to what is left after it).
+  const std::vector<double> odd{7, 5, 3, 1, 0.5};
+  for (const std::size_t budget : {1u, 5u, 17u, 499u, 500u}) {
+    const std::vector<std::size_t> shares = part_budgets(odd, budget, 20);
+    EXPECT_EQ(std::accumulate(shares.begin(), shares.end(), std::size_t(0)), budget) << budget;
+  }
+}
+
+TEST(MedialParts, VertexPartsAndAPartsGraph) {
+  // Three vertices, samples of parts 0, 0, 1, 1; a face over all three and
+  // one edge per pair.
+  MedialGraph g;
+  g.samples = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(5, 0, 0), Vec3(6, 0, 0)};
+  g.sample_parts = {0, 0, 1, 1};
+  g.vertices = {MedialVertex{Vec3(0.5, 0, 0), 0.5, {0, 1, 0, 1}}, MedialVertex{Vec3(5.5, 0, 0), 0.5, {2, 3, 2, 2}},
+                MedialVertex{Vec3(0.5, 1, 0), 0.5, {0, 2, 1, 3}}};  // 2 : 2, the first sample's part
+  g.edges = {MedialEdge{0, 1, {0, 0, 0}}, MedialEdge{1, 2, {0, 0, 0}}, MedialEdge{0, 2, {0, 0, 0}}};
+  g.faces = {{0, 1, 2}};
+  const std::vector<std::int32_t> parts = vertex_parts(g);
+  EXPECT_EQ(parts, (std::vector<std::int32_t>{0, 1, 0}));
+  const MedialGraph zero = medial_graph_part(g, parts, 0);
+  ASSERT_EQ(zero.vertices.size(), 2u);
+  EXPECT_EQ(zero.vertices[1].centre, Vec3(0.5, 1, 0));
+  ASSERT_EQ(zero.edges.size(), 1u);
+  EXPECT_EQ(zero.edges[0].a, 0);
+  EXPECT_EQ(zero.edges[0].b, 1);
+  EXPECT_TRUE(zero.faces.empty());
+  EXPECT_EQ(zero.samples.size(), 4u);
+  // Joined again: the parts' spheres appended, indices shifted.
+  MedialMesh a, b;
+  a.spheres = {Vec4(0, 0, 0, 1), Vec4(1, 0, 0, 1)};
+  a.edges = {{0, 1}};
+  b.spheres = {Vec4(5, 0, 0, 1)};
+  b.isolated = {0};
+  const MedialMesh joined = joined_part_meshes({a, b});
+  EXPECT_EQ(joined.parts, (std::vector<std::int32_t>{0, 0, 1}));
+  EXPECT_EQ(joined.isolated, (std::vector<std::int32_t>{2}));
+  EXPECT_EQ(joined.edges.size(), 1u);
+}
+
+TEST(MedialParts, SmallPartsBesideALargeOneKeepTheirShapeAndStayApart) {
+  // parts_close.ply (make_sphere_meshes.py): a flat ellipsoid and four
+  // small elongated ones side by side beyond its end, 0.04 from it and from
+  // each other. Under one budget of 30 for the whole shape the flat one
+  // took nearly all of it and each small one was left a single sphere, a
+  // ball as wide as the part is long, which overlapped its neighbours:
+  // 5 components came back as 3 (χ 10 → 6). Shared out (an equal share of
+  // 6 each: the minimum of 20 does not fit 5 times in 30; the flat one's
+  // sheet holds more where the link condition keeps its loops, and the
+  // others share what is left), each small part keeps a chain of spheres
+  // along its axis.
+  const TriangleMesh input = read_mesh(std::filesystem::path(SKELCONV_TEST_DATA) / "reconstruct" / "parts_close.ply");
+  ReconstructOptions o;
+  o.method = SkeletonMethod::medial;
+  o.medial.budget = 30;
+  o.measure_divisions = 120;  // the goal's resolution (diagonal / 120)
+  const Reconstruction r = reconstruct(input, o);
+  const Stage& result = r.stages.back();
+  ASSERT_EQ(result.name, "medial");
+  ASSERT_EQ(part_count(result.medial), 5u);
+  std::size_t total = 0;
+  for (std::int32_t p = 0; p < 5; ++p) {
+    const MedialMesh part = medial_mesh_part(result.medial, p);
+    const std::size_t held = part.edges.size() + part.triangles.size() + part.isolated.size();
+    if (p > 0) {
+      EXPECT_GE(held, 2u) << "part " << p << ": more than one sphere";
+      EXPECT_LE(held, 6u) << "part " << p << ": within its share";
+    }
+    total += held;
+  }
+  EXPECT_LE(total, o.medial.budget);
+  const MeshTopology in = mesh_topology(input), out = mesh_topology(mesh_stage(input, result, o));
+  EXPECT_EQ(in.components, 5u);
+  EXPECT_EQ(out.components, in.components);
+  EXPECT_EQ(out.euler_characteristic, in.euler_characteristic);
 }
 
 }  // namespace

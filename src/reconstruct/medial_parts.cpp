@@ -2,7 +2,10 @@
 #include "skelconv/reconstruct/medial_parts.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <map>
+#include <numeric>
 
 #include "union_find.hpp"
 
@@ -70,6 +73,96 @@ MedialMesh medial_mesh_part(const MedialMesh& mesh, std::int32_t part) {
     if (element_part(mesh, triangle) == part) out.triangles.push_back(triangle);
   for (const std::int32_t sphere : mesh.isolated)
     if (element_part(mesh, std::span<const std::int32_t>(&sphere, 1)) == part) out.isolated.push_back(sphere);
+  return out;
+}
+
+std::vector<std::size_t> part_budgets(std::span<const double> weights, std::size_t budget, std::size_t minimum) {
+  const std::size_t n = weights.size();
+  if (n == 0) return {};
+  const std::size_t floor_share = std::min(minimum, budget / n);
+  std::vector<std::size_t> share(n, floor_share);
+  const std::size_t rest = budget - floor_share * n;
+  double total = 0.0;
+  for (const double w : weights) total += std::max(w, 0.0);
+  if (rest == 0 || !(total > 0.0)) return share;
+  // What each part would get in proportion to its weight, less what the
+  // minimum gave it already: the large parts share the rest.
+  std::vector<double> want(n);
+  double wanted = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    want[i] = std::max(0.0, double(budget) * std::max(weights[i], 0.0) / total - double(floor_share));
+    wanted += want[i];
+  }
+  if (!(wanted > 0.0)) return share;
+  std::vector<double> remainder(n);
+  std::size_t given = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double exact = double(rest) * want[i] / wanted;
+    const auto whole = std::size_t(std::floor(exact));
+    share[i] += whole, given += whole;
+    remainder[i] = exact - double(whole);
+  }
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return remainder[a] > remainder[b]; });
+  for (std::size_t k = 0; k < n && given < rest; ++k) ++share[order[k]], ++given;
+  return share;
+}
+
+std::vector<std::int32_t> vertex_parts(const MedialGraph& graph) {
+  std::vector<std::int32_t> parts(graph.vertices.size(), 0);
+  if (graph.sample_parts.empty()) return parts;
+  for (std::size_t v = 0; v < parts.size(); ++v) {
+    std::array<std::int32_t, 4> of;
+    for (std::size_t k = 0; k < 4; ++k) of[k] = graph.sample_parts[std::size_t(graph.vertices[v].samples[k])];
+    std::size_t most = 0;
+    for (const std::int32_t p : of)
+      if (const auto count = std::size_t(std::count(of.begin(), of.end(), p)); count > most) parts[v] = p, most = count;
+  }
+  return parts;
+}
+
+MedialGraph medial_graph_part(const MedialGraph& graph, const std::vector<std::int32_t>& parts, std::int32_t part) {
+  MedialGraph out;
+  out.samples = graph.samples;
+  out.sample_parts = graph.sample_parts;
+  std::vector<std::int32_t> number(graph.vertices.size(), -1);
+  for (std::size_t v = 0; v < graph.vertices.size(); ++v)
+    if (parts[v] == part) number[v] = std::int32_t(out.vertices.size()), out.vertices.push_back(graph.vertices[v]);
+  for (const MedialEdge& e : graph.edges) {
+    if (number[std::size_t(e.a)] < 0 || number[std::size_t(e.b)] < 0) continue;
+    MedialEdge kept = e;
+    kept.a = number[std::size_t(e.a)], kept.b = number[std::size_t(e.b)];
+    out.edges.push_back(kept);
+  }
+  for (const auto& face : graph.faces) {
+    std::vector<std::int32_t> kept;
+    for (const std::int32_t v : face) {
+      if (number[std::size_t(v)] < 0) break;
+      kept.push_back(number[std::size_t(v)]);
+    }
+    if (kept.size() == face.size()) out.faces.push_back(std::move(kept));
+  }
+  return out;
+}
+
+MedialMesh joined_part_meshes(const std::vector<MedialMesh>& meshes) {
+  MedialMesh out;
+  for (std::size_t p = 0; p < meshes.size(); ++p) {
+    const MedialMesh& m = meshes[p];
+    const auto offset = std::int32_t(out.spheres.size());
+    out.spheres.insert(out.spheres.end(), m.spheres.begin(), m.spheres.end());
+    out.parts.insert(out.parts.end(), m.spheres.size(), std::int32_t(p));
+    for (auto e : m.edges) {
+      for (std::int32_t& i : e) i += offset;
+      out.edges.push_back(e);
+    }
+    for (auto t : m.triangles) {
+      for (std::int32_t& i : t) i += offset;
+      out.triangles.push_back(t);
+    }
+    for (const std::int32_t i : m.isolated) out.isolated.push_back(i + offset);
+  }
   return out;
 }
 

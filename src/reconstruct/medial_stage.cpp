@@ -13,6 +13,7 @@
 #include <unordered_map>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "skelconv/mesh/bounding_region.hpp"
 #include "skelconv/mesh/mesh_topology.hpp"
@@ -108,9 +109,11 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   };
   quadric.overhang = m.merged_overhang * diagonal;
   // The closed parts of the input (medial_parts.hpp): with more than one,
-  // each sphere, fit point and inside point is given the part it lies in,
-  // the part whose surface it is deepest inside (largest signed distance),
-  // and the skeleton sums each part's primitives apart.
+  // each sphere and inside point belongs to the part it lies deepest in
+  // (largest signed distance; a sphere, where the budget is shared out per
+  // part, to the part whose graph it was simplified from), each fit point
+  // to the part whose surface it was sampled on, and the skeleton sums
+  // each part's primitives apart.
   const std::vector<std::int32_t> triangle_part = triangle_parts(surface);
   const std::size_t part_total =
       triangle_part.empty() ? 1 : std::size_t(*std::max_element(triangle_part.begin(), triangle_part.end())) + 1;
@@ -128,22 +131,106 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
       if (const double d = part_queries[p].signed_distance(point); d > deepest) deepest = d, best = std::int32_t(p);
     return best;
   };
-  // The simplified medial mesh, its tube ends extended, within `budget`
-  // primitives; `inside_samples` as QuadricOptions's.
-  const auto medial_mesh = [&](int inside_samples, std::size_t budget) {
+  // With several parts, each part's medial graph is simplified alone
+  // under its own share of the budget (medial_parts.hpp, part_budgets).
+  std::vector<double> areas(part_total, 0.0);
+  std::vector<std::size_t> shares{m.budget};
+  if (part_total > 1) {
+    for (std::size_t p = 0; p < part_total; ++p)
+      for (const auto& t : part_surfaces[p].triangles) {
+        const Vec3& a = part_surfaces[p].vertices[std::size_t(t[0])];
+        areas[p] += 0.5 * (part_surfaces[p].vertices[std::size_t(t[1])] - a)
+                              .cross(part_surfaces[p].vertices[std::size_t(t[2])] - a)
+                              .norm();
+      }
+    shares = part_budgets(areas, m.budget, m.part_minimum_budget);
+  }
+  // The simplified medial mesh of `g`, its tube ends extended, at most
+  // `budget` primitives; `inside_samples` as QuadricOptions's.
+  const auto simplified = [&](const MedialGraph& g, std::size_t budget, int inside_samples, QuadricReport& q,
+                              std::size_t& spikes) {
     QuadricOptions options = quadric;
     options.budget = budget;
     options.inside_samples = inside_samples;
     options.inside_tolerance = 0.5 * diagonal / o.measure_divisions;
-    QuadricReport q;
-    MedialMesh mesh = quadric_medial_mesh(graph, options, &q);
-    std::size_t spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach, quadric.depth);
+    MedialMesh mesh = quadric_medial_mesh(g, options, &q);
+    spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach, quadric.depth);
     // Each tube end got one more edge: simplified further where that
     // overruns the budget.
     while (primitives(mesh) > budget && options.budget > 1) {
       options.budget -= std::min(options.budget - 1, primitives(mesh) - budget);
-      mesh = quadric_medial_mesh(graph, options, &q);
+      mesh = quadric_medial_mesh(g, options, &q);
       spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach, quadric.depth);
+    }
+    return mesh;
+  };
+  const auto medial_mesh = [&](int inside_samples) {
+    std::vector<std::size_t> budgets = shares;
+    QuadricReport q;
+    std::size_t spikes = 0;
+    // The single simplification first; with several parts, each sphere
+    // given the part its centre is deepest in. Where it leaves every part
+    // at least its minimum it is kept (the shares would only reorder the
+    // same spheres: the fit, which sums the primitives in the file's
+    // order, may then end elsewhere: the close balls fused once so).
+    MedialMesh mesh = simplified(graph, m.budget, inside_samples, q, spikes);
+    bool starved = false;
+    std::size_t mixed = 0;
+    if (part_total > 1) {
+      for (const Vec4& sphere : mesh.spheres) mesh.parts.push_back(part_of(sphere.head<3>()));
+      for (const auto& edge : mesh.edges) mixed += mesh.parts[std::size_t(edge[0])] != mesh.parts[std::size_t(edge[1])];
+      for (const auto& t : mesh.triangles)
+        mixed += mesh.parts[std::size_t(t[0])] != mesh.parts[std::size_t(t[1])] ||
+                 mesh.parts[std::size_t(t[0])] != mesh.parts[std::size_t(t[2])];
+      const std::size_t floor_share = std::min(m.part_minimum_budget, m.budget / part_total);
+      for (std::size_t p = 0; p < part_total; ++p)
+        starved = starved || primitives(medial_mesh_part(mesh, std::int32_t(p))) < floor_share;
+    }
+    if (starved) {
+      q = QuadricReport{};
+      spikes = 0;
+      const std::vector<std::int32_t> graph_parts = vertex_parts(graph);
+      std::vector<MedialGraph> graphs;
+      for (std::size_t p = 0; p < part_total; ++p) graphs.push_back(medial_graph_part(graph, graph_parts, std::int32_t(p)));
+      std::vector<MedialMesh> meshes(part_total);
+      std::vector<QuadricReport> reports(part_total);
+      std::vector<std::size_t> part_spikes(part_total, 0), done_at(part_total, 0);
+      std::vector<bool> settled(part_total, false);
+      // The link condition may hold a part above its share (a sheet's
+      // loops): it keeps what it holds, and the parts not yet over theirs
+      // share out what is left, until none is over.
+      for (std::size_t pass = 0; pass < part_total; ++pass) {
+        for (std::size_t p = 0; p < part_total; ++p)
+          if (!settled[p] && (pass == 0 || done_at[p] != budgets[p])) {
+            meshes[p] = simplified(graphs[p], budgets[p], inside_samples, reports[p], part_spikes[p]);
+            done_at[p] = budgets[p];
+          }
+        std::size_t held = 0;
+        bool over = false;
+        for (std::size_t p = 0; p < part_total; ++p)
+          if (settled[p] || primitives(meshes[p]) > budgets[p]) {
+            over = over || !settled[p];
+            settled[p] = true;
+            held += primitives(meshes[p]);
+          }
+        if (!over) break;
+        std::vector<double> rest_areas;
+        for (std::size_t p = 0; p < part_total; ++p)
+          if (!settled[p]) rest_areas.push_back(areas[p]);
+        const std::vector<std::size_t> rest =
+            part_budgets(rest_areas, m.budget > held ? m.budget - held : 0, m.part_minimum_budget);
+        for (std::size_t p = 0, k = 0; p < part_total; ++p)
+          if (!settled[p]) budgets[p] = rest[k++];
+      }
+      for (std::size_t p = 0; p < part_total; ++p) {
+        const QuadricReport& pr = reports[p];
+        spikes += part_spikes[p];
+        q.collapses += pr.collapses, q.refused_by_link += pr.refused_by_link;
+        q.loops_closed += pr.loops_closed, q.loops_closed_inside += pr.loops_closed_inside;
+        q.bridges_closed += pr.bridges_closed;
+        q.euler_before += pr.euler_before, q.euler_after += pr.euler_after;
+      }
+      mesh = joined_part_meshes(meshes);
     }
     if (o.progress)
       o.progress(fmt::format("medial mesh: {} spheres, {} triangles, {} tube edges, {} isolated spheres (budget {} "
@@ -159,21 +246,22 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     if (o.progress && spikes > 0)
       o.progress(fmt::format("medial mesh: {} spikes' spheres beyond their ends moved back to the input's surface",
                              spikes));
-    if (part_total > 1) {
-      for (const Vec4& sphere : mesh.spheres) mesh.parts.push_back(part_of(sphere.head<3>()));
-      std::size_t mixed = 0;
-      for (const auto& edge : mesh.edges) mixed += mesh.parts[std::size_t(edge[0])] != mesh.parts[std::size_t(edge[1])];
-      for (const auto& t : mesh.triangles)
-        mixed += mesh.parts[std::size_t(t[0])] != mesh.parts[std::size_t(t[1])] ||
-                 mesh.parts[std::size_t(t[0])] != mesh.parts[std::size_t(t[2])];
-      if (o.progress)
+    if (part_total > 1 && o.progress) {
+      std::vector<std::size_t> held(part_total, 0);
+      for (std::size_t p = 0; p < part_total; ++p) held[p] = primitives(medial_mesh_part(mesh, std::int32_t(p)));
+      if (starved)
+        o.progress(fmt::format("medial mesh: {} parts of the input, a part under its minimum in one simplification: "
+                               "each simplified alone and its own sum of fields, joined by a union; budgets {}, "
+                               "primitives {}",
+                               part_total, fmt::join(budgets, " "), fmt::join(held, " ")));
+      else
         o.progress(fmt::format("medial mesh: {} parts of the input, each its own sum of fields, joined by a union "
-                               "({} edges and triangles join spheres of two parts)",
-                               part_total, mixed));
+                               "({} edges and triangles join spheres of two parts; primitives {})",
+                               part_total, mixed, fmt::join(held, " ")));
     }
     return mesh;
   };
-  const MedialMesh mesh = medial_mesh(0, m.budget);
+  const MedialMesh mesh = medial_mesh(0);
   Stage stage;
   stage.name = "medial";
   // The fit's points on the input itself (one per cell, not the cell's
@@ -303,7 +391,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
                              "against {}): the medial mesh again, its loops across the input closed",
                              mesh_topology(*stage.meshed).euler_characteristic, input_topology.euler_characteristic));
     MedialFitReport again_report;
-    Stage again = fitted(medial_mesh(m.close_inside_samples, m.budget), &again_report);
+    Stage again = fitted(medial_mesh(m.close_inside_samples), &again_report);
     if (!again.meshed && !again.medial.spheres.empty()) {
       topology_error(again.medial);
       again.meshed = std::move(meshed.back().second);

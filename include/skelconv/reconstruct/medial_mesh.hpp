@@ -17,8 +17,10 @@ struct MedialMesh {
   std::vector<std::array<std::int32_t, 2>> edges;      ///< tubes: edges in no triangle
   std::vector<std::array<std::int32_t, 3>> triangles;  ///< sheets
   std::vector<std::int32_t> isolated;                  ///< spheres in no edge or triangle
-  /// Per sphere, the closed part of the input its centre lies in
-  /// (medial_parts.hpp); empty when the input is one part.
+  /// Per sphere, the closed part of the input its centre lies deepest in,
+  /// or, where the budget was shared out per part, whose medial graph it
+  /// was simplified from (medial_parts.hpp); empty when the input is one
+  /// part.
   std::vector<std::int32_t> parts;
 };
 

@@ -30,6 +30,13 @@ enum class SkeletonMethod { curve, medial, automatic };
 struct MedialOptions {
   /// At most this many primitives (SCALIS triangles, segments, points).
   std::size_t budget = 500;
+  /// An input of several closed parts shares `budget` out per part, in
+  /// proportion to their areas, each at least this many primitives (or an
+  /// equal share where the parts are too many for that): with one budget
+  /// for the whole shape, a small part was left one or two spheres, which
+  /// bulge past the gap into a neighbour (docs/reconstruction_medial.md,
+  /// "Separate parts").
+  std::size_t part_minimum_budget = 20;
   /// Pruning angle θ_min of the medial path, degrees. Lower than the curve
   /// path's 90°: on a sheet that meets the surface at a right-angled edge
   /// (a box) the contacts subtend exactly 90°, and the sheet must stay.

@@ -6,6 +6,9 @@ PLY) into the current directory; standard library only, same bytes each run:
   spheres_overlapping.ply  two icospheres (2 subdivisions) overlapping, one mesh: self-intersecting
   spheres_close.ply        two icospheres (2 subdivisions), radius 1, 0.02 apart, one mesh: two separate
                            parts that a sum of fields would fuse
+  parts_close.ply          a flat ellipsoid (semi-axes 1, 0.6, 0.12; icosphere of 3 subdivisions) and four small
+                           ones (0.25, 0.08, 0.08; 2 subdivisions) side by side beyond its x end, 0.04 from it
+                           and from each other: one large part and four small ones close together
   sphere_open.ply          sphere.ply without the triangles whose centroid is within 25 degrees of the
                            pole (0, 0, 1): an open mesh of one hole, for `skeletonize --repair`
   sphere_and_shell.ply     sphere.ply and, beside it, a small thin curved shell: a square 0.6 across and 0.01
@@ -68,6 +71,13 @@ def main():
     V3, F3 = icosphere(2, 1.0, (2.02, 0, 0))
     write("spheres_close.ply", V1 + V3, F1 + [tuple(i + len(V1) for i in t) for t in F3],
           "two icospheres (radius 1, centres 2.02 apart: 0.02 between them) in one mesh: two separate parts")
+    PV, PF = [], []
+    for level, centre, axes in [(3, (0, 0, 0), (1.0, 0.6, 0.12))] + [(2, (1.29, -0.3 + 0.2 * k, 0), (0.25, 0.08, 0.08))
+                                                                      for k in range(4)]:
+        EV, EF = icosphere(level)
+        PF += [tuple(i + len(PV) for i in t) for t in EF]
+        PV += [tuple(centre[i] + axes[i] * v[i] for i in range(3)) for v in EV]
+    write("parts_close.ply", PV, PF, "a flat ellipsoid and four small ones beside it, 0.04 apart: five separate parts")
     cap = math.cos(math.radians(25))
     kept = [t for t in F if sum(V[i][2] for i in t) / 3 / math.sqrt(sum((sum(V[i][k] for i in t) / 3) ** 2
                                                                        for k in range(3))) < cap]
