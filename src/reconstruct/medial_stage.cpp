@@ -237,7 +237,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
                              "primitives); {} collapses ({} refused by the link condition, {} covered loops closed{}), "
                              "Euler characteristic of the medial complex {} -> {}",
                              mesh.spheres.size(), mesh.triangles.size(), mesh.edges.size(), mesh.isolated.size(),
-                             budget, q.collapses, q.refused_by_link, q.loops_closed,
+                             m.budget, q.collapses, q.refused_by_link, q.loops_closed,
                              inside_samples > 0 ? fmt::format(", {} of them inside the input, not the balls; {} bridged "
                                                               "sheets closed",
                                                               q.loops_closed_inside, q.bridges_closed)
