@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -156,7 +157,12 @@ class SurfaceCells {
         for (int j = -1; j <= 1; ++j)
           for (int k = -1; k <= 1; ++k) meet(cell.offsetBy(i, j, k), wave);
       while (!wave.empty()) {
+        const auto start = std::chrono::steady_clock::now();
         sample_corners(wave);
+        // Helpers only where a wave's samples cost more than starting them:
+        // on Zanni's ant (~1 µs an evaluation) the threads' starts cost more
+        // CPU time than they saved. The values do not depend on it.
+        parallel_ = std::chrono::steady_clock::now() - start >= parallel_wave_time;
         std::vector<openvdb::Coord> next;
         for (const openvdb::Coord& met : wave) spread_from(met, next);
         wave = std::move(next);
@@ -261,7 +267,7 @@ class SurfaceCells {
           const std::function<double(const Vec3&)>& level = near ? near : request_.level;
           for (int k = 0; k < owned.count; ++k) owned.values[k] = stored(level(node_point(owned.nodes[k])));
         },
-        cells_per_block, request_.threads);
+        cells_per_block, parallel_ ? request_.threads : 1u);
     for (const Cell& owned : cells)
       for (int k = 0; k < owned.count; ++k) accessor_.setValue(owned.nodes[k], owned.values[k]);
   }
@@ -284,6 +290,10 @@ class SurfaceCells {
   /// Cells a thread takes at a time: a few hundred µs of evaluations on a
   /// crowded skeleton, and a wave of fewer cells stays on one thread.
   static constexpr std::size_t cells_per_block = 8;
+  /// A wave that took this long on its threads has the next one sampled on
+  /// request.threads threads, else on one (the first wave on all of them).
+  static constexpr std::chrono::microseconds parallel_wave_time{1000};
+  bool parallel_ = true;
 
   /// A cell's corners lie √3/2 voxel from its centre; a little more covers
   /// the rounding of their coordinates (a corner found outside would only
