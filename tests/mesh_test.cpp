@@ -350,6 +350,45 @@ TEST(MeshDeterminism, SameInputSameMesh) {
   }
 }
 
+TEST(MeshThreads, EveryThreadCountGivesTheOneThreadMesh) {
+  // The seeds' rays, the grid's continuation (a wave of cells at a time)
+  // and the projection run on MeshOptions::threads threads, each ray, cell
+  // or vertex into its own slot: the mesh must be one thread's to the bit.
+  // Zanni's ant (24 Cauchy SCALIS segments) in the tolerance mode, where a
+  // grid node's value depends on which cell samples it (value_near's rules
+  // are chosen for a ball around that cell), the grid cases (compact and
+  // infinite supports, SCALIS, several components) and one CGAL case.
+  struct Run {
+    std::string name;
+    Skeleton skeleton;
+    double tolerance;
+    MeshOptions options;
+  };
+  std::vector<Run> runs;
+  {
+    MeshOptions options = options_at(1.0, 0.12);
+    options.method = MeshMethod::grid;
+    runs.push_back({"ant", load_skeleton_file(SKELCONV_ANT_SKELETON), Skeleton::default_tolerance, options});
+  }
+  for (const TopologyCase& c : grid_cases())
+    runs.push_back({c.skeleton, load(c.skeleton), 0.0, options_at(c.iso, c.size, c.distance)});
+  for (std::size_t k = 1; k < runs.size(); ++k) runs[k].options.method = MeshMethod::grid;
+  runs.push_back({"figure_eight (cgal)", load("figure_eight"), 0.0, options_at(0.4)});
+  for (Run& run : runs) {
+    const ImplicitField field = skeleton_field(run.skeleton, 4, run.tolerance);
+    run.options.threads = 1;
+    const TriangleMesh one = mesh_iso_surface(field, run.options);
+    for (const unsigned threads : {2u, 3u}) {
+      run.options.threads = threads;
+      const TriangleMesh many = mesh_iso_surface(field, run.options);
+      const std::string what = run.name + ", " + std::to_string(threads) + " threads";
+      EXPECT_EQ(many.vertices, one.vertices) << what;
+      EXPECT_EQ(many.normals, one.normals) << what;
+      EXPECT_EQ(many.triangles, one.triangles) << what;
+    }
+  }
+}
+
 TEST(MeshGrid, SkippingBlocksOutsideTheSupportsChangesNothing) {
   // The grid method fills the blocks no support box meets with the level of
   // f = 0 instead of evaluating them: the same node values, so the same mesh.

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "count_option.hpp"
+#include "thread_option.hpp"
 #include "exit_status.hpp"
 #include "point_lines.hpp"
 #include "progress_lines.hpp"
@@ -117,18 +118,9 @@ std::string evaluate_lines(const Skeleton& skeleton, std::string_view input, uns
 CLI::App* add_eval_command(CLI::App& app, EvalOptions& options) {
   CLI::App* eval = app.add_subcommand("eval", "Evaluate the field and its gradient at points read from stdin");
   eval->add_option("SKELETON", options.skeleton_path, "Skeleton file (JSON)")->required();
-  eval->add_option("--threads", options.threads,
-                   "Threads evaluating the points (0: every core, at most 1024); the output is the same for any value")
-      ->check(count_option())
-      ->check(CLI::Validator(
-          [](std::string& text) -> std::string {
-            // count_option has passed: digits only. A count too long for
-            // unsigned is over the limit too, and is refused with the limit.
-            const std::size_t digits = text.size() - std::min(text.size(), text.find_first_not_of('0'));
-            if (digits <= 4 && std::stoul(text) <= max_batch_threads) return {};
-            return fmt::format("{}, got {}", thread_limit_text(), text);
-          },
-          "COUNT"));
+  add_thread_option(eval, options.threads,
+                    "Threads evaluating the points (0: every core, at most 1024); the output is the same for any "
+                    "value");
   eval->add_option("--max-points", options.limits.max_points,
                    "Refuse more points than this (default 10000000): the points and their output lines are held "
                    "in memory until the last one is evaluated")

@@ -15,6 +15,7 @@
 #include "exit_status.hpp"
 #include "../detail/whole_files.hpp"
 #include "text_output.hpp"
+#include "thread_option.hpp"
 #include "tolerance_option.hpp"
 #include "skelconv/errors.hpp"
 #include "skelconv/mesh/implicit_field.hpp"
@@ -96,6 +97,9 @@ CLI::App* add_mesh_command(CLI::App& app, MeshCommandOptions& options) {
                    "Relative tolerance of the field (default 1e-12; 0: exact to rounding): Cauchy segments far "
                    "from a point take short quadrature rules within it (docs/field.md, \"Tolerance\")")
       ->check(tolerance_range());
+  add_thread_option(mesh, options.threads,
+                    "Threads for the seeds' rays, the grid's continuation and the projection (0, the default: every "
+                    "core; at most 1024); the mesh is the same bytes for any value");
   mesh->add_flag("--ascii", options.ascii, "Write ASCII PLY instead of binary");
   mesh->add_flag("--quiet", options.quiet, "No progress line on stderr");
   mesh->footer(mesh_footer);
@@ -112,6 +116,7 @@ int run_mesh(const MeshCommandOptions& options) {
     mesh_options.size = options.size;
     mesh_options.distance = options.distance;
     if (options.max_triangles) mesh_options.max_triangles = *options.max_triangles;
+    mesh_options.threads = options.threads;
     if (!options.quiet) {
       mesh_options.progress = [](const MeshProgress& p) {
         std::fprintf(stderr, "skelconv mesh: refining, %zu field evaluations, %.1f s\n", p.field_evaluations,

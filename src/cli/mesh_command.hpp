@@ -33,6 +33,7 @@ struct MeshCommandOptions {
   bool ascii = false;
   bool quiet = false;
   double tolerance = Skeleton::default_tolerance;  ///< --tolerance (skeleton_field)
+  unsigned threads = 0;                            ///< --threads (MeshOptions::threads; 0: every core)
 };
 
 /// Registers the `mesh` subcommand on `app`, filling `options` when parsed.

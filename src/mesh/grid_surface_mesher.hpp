@@ -56,6 +56,9 @@ struct GridSurfaceRequest {
   /// sampling's on every component a seed reaches; a component no seed
   /// reaches is left out (support_boxes and sign_over are not used).
   std::vector<Vec3> seeds;
+  /// Threads sampling the cells of the continuation (at least 1); the mesh
+  /// is the same bytes for any count.
+  unsigned threads = 1;
 };
 
 /// Vertices and triangles (normals pointing out of {level < 0}); vertices

@@ -19,6 +19,7 @@
 #include "skelconv/errors.hpp"
 #include "skelconv/mesh/surface_projection.hpp"
 #include "skelconv/mesh/surface_seeds.hpp"
+#include "../detail/parallel_for.hpp"
 #include "../detail/tick_clock.hpp"
 
 namespace skelconv {
@@ -369,7 +370,8 @@ void project_vertices(TriangleMesh& mesh, const ImplicitField& field, const Mesh
   // Half the required tolerance: the bounding box moves slightly with the
   // projection, and the check is made on the final box.
   project_to_surface(mesh, field, options.iso,
-                     {.tolerance = 0.5 * options.projection_tolerance * diagonal, .max_step = size});
+                     {.tolerance = 0.5 * options.projection_tolerance * diagonal, .max_step = size,
+                      .threads = options.threads});
 }
 
 }  // namespace
@@ -408,12 +410,14 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
   // samples the cells around it): a quarter of a voxel brackets it, where
   // CGAL's refinement starts from the seeds themselves. On a dense skeleton
   // the bisection to 1e-4 of a voxel was half the grid method's time.
+  const unsigned threads = options.threads == 0 ? detail::parallel_threads() : options.threads;
   const std::vector<Vec3> seeds =
       surface_seeds(metered, iso, run.box,
                     {.spacing = run.size,
                      .bracket_fraction = options.method == MeshMethod::grid && options.grid_from_seeds
                                              ? grid_seed_bracket
-                                             : SurfaceSeedOptions{}.bracket_fraction});
+                                             : SurfaceSeedOptions{}.bracket_fraction,
+                     .threads = threads});
   if (seeds.empty()) {
     throw EvaluationError(fmt::format("no surface point found by the rays from the skeleton at iso {}", iso));
   }
@@ -432,7 +436,8 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
                                                        .empty_level = iso - 0.0,  // level(p) where f(p) = 0
                                                        .sign_over = level_sign(metered, iso),
                                                        .seeds = options.grid_from_seeds ? seeds
-                                                                                        : std::vector<Vec3>{}})
+                                                                                        : std::vector<Vec3>{},
+                                                       .threads = threads})
                           : detail::cgal_surface_mesh({
                                 .level = level,
                                 .box = run.box,

@@ -141,7 +141,7 @@ void project_to_surface(TriangleMesh& mesh, const ImplicitField& field, double i
           throw EvaluationError(error.problem(), fmt::format("mesh vertex {}", k));
         }
       },
-      256);
+      256, options.threads == 0 ? detail::parallel_threads() : options.threads);
 }
 
 }  // namespace skelconv

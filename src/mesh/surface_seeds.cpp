@@ -118,6 +118,7 @@ std::vector<Vec3> surface_seeds(const ImplicitField& field, double iso, const Bo
   const std::vector<Vec3>& points = field.skeleton_points;
   std::vector<double> values(points.size(), 0.0);
   std::vector<std::exception_ptr> value_failures(points.size());
+  const unsigned threads = options.threads == 0 ? detail::parallel_threads() : options.threads;
   detail::parallel_for(
       points.size(),
       [&](std::size_t k) {
@@ -127,7 +128,7 @@ std::vector<Vec3> surface_seeds(const ImplicitField& field, double iso, const Bo
           value_failures[k] = std::current_exception();
         }
       },
-      64);
+      64, threads);
   // The points that cast rays, up to the first failure that is fatal.
   std::vector<std::size_t> sources;
   std::exception_ptr fatal;
@@ -158,7 +159,7 @@ std::vector<Vec3> surface_seeds(const ImplicitField& field, double iso, const Bo
     sources.push_back(k);
   }
   std::vector<std::vector<Vec3>> crossings(sources.size());
-  detail::parallel_for(sources.size(), [&](std::size_t n) {
+  const auto cast_rays = [&](std::size_t n) {
     for (const Vec3& d : directions) {
       // A ray in the plane of an inverse-kernel polygon may land on one of its
       // edges or vertices (f infinite, refused as above): that ray gives no
@@ -170,7 +171,8 @@ std::vector<Vec3> surface_seeds(const ImplicitField& field, double iso, const Bo
         if (!field.infinite_on_skeleton) throw;
       }
     }
-  });
+  };
+  detail::parallel_for(sources.size(), cast_rays, 16, threads);
   if (fatal) std::rethrow_exception(fatal);
   for (const std::vector<Vec3>& found : crossings) grid.add_from_one_source(found, seeds);
   if (largest == -std::numeric_limits<double>::infinity() && first_failure) throw *first_failure;

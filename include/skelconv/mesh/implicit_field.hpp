@@ -18,9 +18,10 @@
 
 namespace skelconv {
 
-/// The mesher calls value, value_and_gradient and the functions the _near
-/// ones return from several threads at once (the seeds' rays and the
-/// projection run on every core): they must be safe to, as a Skeleton's are.
+/// The mesher calls value, value_and_gradient, the _near ones and the
+/// functions they return from several threads at once (the seeds' rays,
+/// the grid's continuation and the projection run on every core): they
+/// must be safe to, as a Skeleton's are.
 struct ImplicitField {
   /// f(p) and ∇f(p). May return +inf (on an inverse-kernel skeleton); may
   /// throw InputError / EvaluationError.

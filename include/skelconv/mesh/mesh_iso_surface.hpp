@@ -68,6 +68,10 @@ struct MeshOptions {
   /// finishes such a mesh into the projected one.
   bool project = true;
   unsigned random_seed = 0;
+  /// Threads for the seeds' rays, the grid's continuation and the
+  /// projection (0: every core, std::thread::hardware_concurrency). The
+  /// mesh is the same bytes for any count.
+  unsigned threads = 0;
   /// The run is refused before any refinement when it would make more
   /// triangles than this (estimate_triangles below): a facet size far too
   /// small for the box would otherwise run for hours and exhaust memory.

@@ -26,6 +26,9 @@ struct ProjectionOptions {
   double tolerance = 0.0;  ///< bound on |f − iso| / |∇f| (a length)
   double max_step = 0.0;   ///< longest single move (a length)
   int max_iterations = 60;
+  /// Threads projecting the vertices (0: every core); the mesh is the same
+  /// for any count.
+  unsigned threads = 0;
 };
 
 /// Projects every vertex of `mesh` onto f = iso and fills mesh.normals.

@@ -36,6 +36,9 @@ struct SurfaceSeedOptions {
   /// Smallest distance between seeds of different skeleton points, as a
   /// fraction of `spacing`.
   double separation = 0.5;
+  /// Threads casting the rays (0: every core); the seeds are the same for
+  /// any count.
+  unsigned threads = 0;
 };
 
 /// Surface points of `field` at `iso` inside `box`. Throws InputError
