@@ -25,10 +25,14 @@ std::vector<reconstruct::Vec4> spurious_cavities(const TriangleMesh& meshed,
       if (const std::int32_t a = find(t[0]), b = find(t[std::size_t(k)]); a != b)
         parent[std::size_t(std::max(a, b))] = std::min(a, b);
   // Per component (keyed by its root), the signed volume (divergence
-  // theorem: Σ a · (b × c) / 6 over the triangles, negative for a wall that
-  // faces into the volume it bounds) and its vertices' box, in the order
-  // of their roots (the same mesh, the same balls).
+  // theorem: Σ (a − o) · ((b − o) × (c − o)) / 6 over the triangles,
+  // negative for a wall that faces into the volume it bounds; o a vertex
+  // of the component, so that a small cavity far from the coordinates'
+  // origin does not sum large terms to a small volume of the wrong sign)
+  // and its vertices' box, in the order of their roots (the same mesh,
+  // the same balls).
   struct Component {
+    Vec3 origin = Vec3::Zero();
     double volume = 0.0;
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
     Vec3 hi = -lo;
@@ -38,11 +42,14 @@ std::vector<reconstruct::Vec4> spurious_cavities(const TriangleMesh& meshed,
   std::vector<std::int32_t> index(meshed.vertices.size(), -1);
   for (const auto& t : meshed.triangles) {
     const std::size_t root = std::size_t(find(t[0]));
-    if (index[root] < 0) index[root] = std::int32_t(components.size()), components.emplace_back();
+    if (index[root] < 0) {
+      index[root] = std::int32_t(components.size());
+      components.emplace_back().origin = meshed.vertices[std::size_t(t[0])];
+    }
     Component& c = components[std::size_t(index[root])];
-    const Vec3& a = meshed.vertices[std::size_t(t[0])];
-    const Vec3& b = meshed.vertices[std::size_t(t[1])];
-    const Vec3& d = meshed.vertices[std::size_t(t[2])];
+    const Vec3 a = meshed.vertices[std::size_t(t[0])] - c.origin;
+    const Vec3 b = meshed.vertices[std::size_t(t[1])] - c.origin;
+    const Vec3 d = meshed.vertices[std::size_t(t[2])] - c.origin;
     c.volume += a.dot(b.cross(d)) / 6.0;
   }
   std::vector<bool> seen(meshed.vertices.size(), false);
