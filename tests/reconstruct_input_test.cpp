@@ -294,8 +294,9 @@ std::size_t edge_components(const TriangleMesh& m) {
     for (std::size_t k = 0; k < 3; ++k) {
       const Vec3& a = m.vertices[std::size_t(m.triangles[t][k])];
       const Vec3& b = m.vertices[std::size_t(m.triangles[t][(k + 1) % 3])];
-      const auto e =
-          std::minmax(std::array<double, 3>{a.x(), a.y(), a.z()}, std::array<double, 3>{b.x(), b.y(), b.z()});
+      // By value: std::minmax of two temporaries returns references to them.
+      const std::array<double, 3> p{a.x(), a.y(), a.z()}, q{b.x(), b.y(), b.z()};
+      const std::pair<std::array<double, 3>, std::array<double, 3>> e = p < q ? std::pair(p, q) : std::pair(q, p);
       if (const auto [it, added] = first.emplace(e, t); !added) parent[root(t)] = root(it->second);
     }
   std::size_t n = 0;
