@@ -127,16 +127,34 @@ OrthographicCamera camera_for(const std::vector<Vec3>& points, int width, int he
   const Vec3 middle = most.cross(least);
   camera.forward = -(std::cos(turn) * least + std::sin(turn) * middle).normalized();
   camera.right = camera.forward.cross(camera.up).normalized();
+  return fitted(camera, points, width, height, margin);
+}
+
+OrthographicCamera fitted(OrthographicCamera camera, const std::vector<Vec3>& points, int width, int height,
+                          int margin) {
+  if (points.empty()) throw std::invalid_argument("fitted: no points to show");
   // Centre on the middle of the projected extent, and scale it to fit.
+  const auto [lo, hi] = projected_box(camera, points);
+  const Vec3 mid = 0.5 * (lo + hi);
+  camera.centre = mid.x() * camera.right + mid.y() * camera.up + mid.z() * camera.forward;
+  const double extent_x = std::max(hi.x() - lo.x(), 1e-300), extent_y = std::max(hi.y() - lo.y(), 1e-300);
+  camera.pixels_per_unit = std::min((width - 2.0 * margin) / extent_x, (height - 2.0 * margin) / extent_y);
+  return camera;
+}
+
+std::pair<Vec3, Vec3> projected_box(const OrthographicCamera& camera, const std::vector<Vec3>& points) {
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const Vec3& p : points) {
     const Vec3 q(p.dot(camera.right), p.dot(camera.up), p.dot(camera.forward));
     lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
   }
-  const Vec3 mid = 0.5 * (lo + hi);
-  camera.centre = mid.x() * camera.right + mid.y() * camera.up + mid.z() * camera.forward;
-  const double extent_x = std::max(hi.x() - lo.x(), 1e-300), extent_y = std::max(hi.y() - lo.y(), 1e-300);
-  camera.pixels_per_unit = std::min((width - 2.0 * margin) / extent_x, (height - 2.0 * margin) / extent_y);
+  return {lo, hi};
+}
+
+OrthographicCamera turned_quarter(OrthographicCamera camera) {
+  const Vec3 right = camera.right;
+  camera.right = camera.up;
+  camera.up = -right;
   return camera;
 }
 

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "skelconv/geometry.hpp"
@@ -35,6 +36,16 @@ struct OrthographicCamera {
 /// (largest component positive), so the view does not depend on the order
 /// of the points.
 OrthographicCamera camera_for(const std::vector<Vec3>& points, int width, int height, int margin);
+/// `camera` looking the same way, recentred and rescaled to show `points`
+/// whole in a `width` × `height` image with `margin` pixels on each side.
+OrthographicCamera fitted(OrthographicCamera camera, const std::vector<Vec3>& points, int width, int height,
+                          int margin);
+/// The box of `points` in the camera's frame (right, up, forward
+/// coordinates): its first two extents are the picture's width and height.
+std::pair<Vec3, Vec3> projected_box(const OrthographicCamera& camera, const std::vector<Vec3>& points);
+/// `camera` turned a quarter round its viewing direction: what pointed up
+/// points right (a long shape laid across a wide picture).
+OrthographicCamera turned_quarter(OrthographicCamera camera);
 
 class RasterImage {
  public:

@@ -22,6 +22,17 @@ constexpr int gap = 12;             ///< between panels and around the picture
 constexpr int title_height = 36;    ///< above the panels
 constexpr int footer_height = 76;   ///< below: the numbers and the colour bar
 constexpr int text_scale = 2;       ///< block letters 10 × 14 pixels
+constexpr int text_height = 7 * text_scale;
+/// A shape whose picture would be this many times higher than wide (its
+/// largest spread points up) is laid across the picture instead: in square
+/// panels it would be a sliver (a femur, a rod, a snake).
+constexpr double long_shape = 1.8;
+/// Long shapes: panels as wide as one and a half squares, and no higher
+/// than the shape needs (but not under `wide_panel_min_height`: room for
+/// the colours of a thin rod's surface).
+constexpr int wide_panel_width = 3 * panel_size / 2;
+constexpr int wide_panel_min_height = 140;
+constexpr int label_height = 24;    ///< long shapes: a panel's name above it
 
 const Rgb background{1.0, 1.0, 1.0};
 const Rgb ink{0.1, 0.1, 0.1};
@@ -38,9 +49,9 @@ std::array<Vec3, 3> corners_of(const TriangleMesh& mesh, const std::array<std::i
 /// outlines (circles of their radius in the view plane); the input's
 /// silhouette behind them, for where they lie.
 RasterImage skeleton_panel(const reconstruct::Stage& stage, const TriangleMesh& input,
-                           const OrthographicCamera& camera) {
-  RasterImage panel(panel_size * supersampling, panel_size * supersampling, background);
-  const double width = 2.0 * supersampling;
+                           const OrthographicCamera& camera, int panel_width, int panel_height) {
+  RasterImage panel(panel_width * supersampling, panel_height * supersampling, background);
+  const double width = 2.0 * supersampling;  // of the lines
   const auto circle = [&](const Vec3& centre, double radius) {
     constexpr int pieces = 48;
     for (int k = 0; k < pieces; ++k) {
@@ -75,8 +86,8 @@ std::vector<double> distances_to(const TriangleMesh& mesh, const TriangleMesh& o
 
 /// `surface` shaded, each vertex coloured by distance[v] / largest.
 RasterImage distance_panel(const TriangleMesh& surface, const std::vector<double>& distance, double largest,
-                           const OrthographicCamera& camera) {
-  RasterImage panel(panel_size * supersampling, panel_size * supersampling, background);
+                           const OrthographicCamera& camera, int panel_width, int panel_height) {
+  RasterImage panel(panel_width * supersampling, panel_height * supersampling, background);
   const auto colour = [&](std::int32_t v) { return sequential_colour(distance[std::size_t(v)] / largest); };
   for (const auto& t : surface.triangles)
     panel.triangle(camera, corners_of(surface, t), {colour(t[0]), colour(t[1]), colour(t[2])});
@@ -88,6 +99,46 @@ void centred_text(RasterImage& image, int x0, int width, int y, const std::strin
   image.text(x0 + (width - RasterImage::text_width(text, text_scale)) / 2, y, text, text_scale, ink);
 }
 
+/// Where the six panels go: three kinds (0 the input, 1 the skeleton, 2
+/// the result), each seen from the front and from the back.
+///   * square: the kinds side by side (their names above them) and the
+///     views one under the other, in square panels;
+///   * wide, for a long shape turned to lie across: the views side by side
+///     (their names above them) and the kinds one under the other, each
+///     under its name, in panels as wide as 1.5 squares and as high as the
+///     shape needs.
+struct Layout {
+  bool wide = false;
+  int panel_width = panel_size, panel_height = panel_size;
+  int width = 0, height = 0;
+  int footer_top = 0;
+
+  static Layout square() {
+    Layout l;
+    l.width = 3 * panel_size + 4 * gap;
+    l.footer_top = title_height + 2 * panel_size;
+    l.height = l.footer_top + footer_height;
+    return l;
+  }
+  /// `aspect`: the shape's projected length over its width, turned across.
+  static Layout across(double aspect) {
+    Layout l;
+    l.wide = true;
+    l.panel_width = wide_panel_width;
+    const double drawn = (wide_panel_width - 2.0 * gap) / aspect + 2.0 * gap;
+    l.panel_height = std::clamp(int(std::ceil(drawn)), wide_panel_min_height, panel_size);
+    l.width = 2 * wide_panel_width + 3 * gap;
+    l.footer_top = title_height + 3 * (label_height + l.panel_height);
+    l.height = l.footer_top + footer_height + text_height + 10;  // a third line: the bar under the numbers
+    return l;
+  }
+  /// The top-left corner of the panel of `kind` seen from `view` (0 front, 1 back).
+  std::pair<int, int> corner(int kind, int view) const {
+    if (wide) return {gap + view * (panel_width + gap), title_height + kind * (label_height + panel_height) + label_height};
+    return {gap + kind * (panel_width + gap), title_height + view * panel_height};
+  }
+};
+
 }  // namespace
 
 std::string report_image_png(const TriangleMesh& input, const reconstruct::Stage& stage,
@@ -96,8 +147,15 @@ std::string report_image_png(const TriangleMesh& input, const reconstruct::Stage
   // together (a result that overshoots stays in the picture).
   std::vector<Vec3> shown = input.vertices;
   shown.insert(shown.end(), measure.surface.vertices.begin(), measure.surface.vertices.end());
-  const OrthographicCamera camera =
+  OrthographicCamera camera =
       camera_for(shown, panel_size * supersampling, panel_size * supersampling, gap * supersampling);
+  const auto [lo, hi] = projected_box(camera, shown);
+  const double across = hi.x() - lo.x(), along = hi.y() - lo.y();  // along the largest spread, which points up
+  const Layout layout =
+      along > long_shape * across ? Layout::across(along / std::max(across, 1e-3 * along)) : Layout::square();
+  if (layout.wide)
+    camera = fitted(turned_quarter(camera), shown, layout.panel_width * supersampling,
+                    layout.panel_height * supersampling, gap * supersampling);
 
   // Both ways: where the result misses a part of the input (a finger
   // lost) shows on the input, where it bulges out on the result; one colour
@@ -117,49 +175,64 @@ std::string report_image_png(const TriangleMesh& input, const reconstruct::Stage
   // sphere's one ball) still gets a scale: 0.01% of the diagonal at least.
   largest = std::max({largest, measure.distance.hausdorff, 1e-4 * diagonal});
 
-  // Two rows: the front, and the back (the camera turned half round its up
+  // Two views: the front, and the back (the camera turned half round its up
   // direction), so that no part of either surface is out of sight.
   OrthographicCamera back = camera;
   back.forward = -camera.forward;
   back.right = -camera.right;
-  const int width = 3 * panel_size + 4 * gap;
-  const int height = title_height + 2 * panel_size + footer_height;
-  RasterImage image(width, height, background);
-  const int x[3] = {gap, 2 * gap + panel_size, 3 * gap + 2 * panel_size};
-  for (int row = 0; row < 2; ++row) {
-    const OrthographicCamera& view = row == 0 ? camera : back;
-    const int y = title_height + row * panel_size;
-    image.paste(distance_panel(fine_input, input_distance, largest, view), x[0], y);
-    image.paste(skeleton_panel(stage, input, view), x[1], y);
-    image.paste(distance_panel(result, result_distance, largest, view), x[2], y);
-    image.text(x[0], y + 4, row == 0 ? "front" : "back", text_scale, ink);
+  RasterImage image(layout.width, layout.height, background);
+  const int pw = layout.panel_width, ph = layout.panel_height;
+  for (int view = 0; view < 2; ++view) {
+    const OrthographicCamera& seen = view == 0 ? camera : back;
+    const auto at = [&](int kind) { return layout.corner(kind, view); };
+    image.paste(distance_panel(fine_input, input_distance, largest, seen, pw, ph), at(0).first, at(0).second);
+    image.paste(skeleton_panel(stage, input, seen, pw, ph), at(1).first, at(1).second);
+    image.paste(distance_panel(result, result_distance, largest, seen, pw, ph), at(2).first, at(2).second);
+    if (!layout.wide) image.text(at(0).first, at(0).second + 4, view == 0 ? "front" : "back", text_scale, ink);
   }
-  const int top = title_height + panel_size;  // the footer goes below the second row
 
   const MeshTopology in = mesh_topology(input);
   const reconstruct::PrimitiveCounts n = reconstruct::primitive_counts(stage, options);
-  const int title_y = (title_height - 7 * text_scale) / 2;
-  centred_text(image, x[0], panel_size, title_y, fmt::format("input: distance to the result"));
-  centred_text(image, x[1], panel_size, title_y, fmt::format("skeleton ({}): {} primitives", stage.name, n.total()));
-  centred_text(image, x[2], panel_size, title_y, "result: distance to the input");
+  const int title_y = (title_height - text_height) / 2;
+  const std::string kind_names[3] = {"input: distance to the result",
+                                     fmt::format("skeleton ({}): {} primitives", stage.name, n.total()),
+                                     "result: distance to the input"};
+  if (layout.wide) {
+    for (int view = 0; view < 2; ++view)
+      centred_text(image, layout.corner(0, view).first, pw, title_y, view == 0 ? "front" : "back");
+    for (int kind = 0; kind < 3; ++kind) {
+      const auto [x, y] = layout.corner(kind, 0);
+      centred_text(image, x, layout.width - 2 * gap, y - label_height + (label_height - text_height) / 2, kind_names[kind]);
+    }
+  } else {
+    for (int kind = 0; kind < 3; ++kind) centred_text(image, layout.corner(kind, 0).first, pw, title_y, kind_names[kind]);
+  }
 
-  // Under the first two panels, the measured numbers; under the third, the
+  // The measured numbers; beside them (square) or under them (wide), the
   // colour bar from 0 to the largest distance.
-  const int line1 = top + panel_size + 10, line2 = line1 + 7 * text_scale + 10;
-  const int left_width = 2 * panel_size + gap;
-  centred_text(image, x[0], left_width, line1,
+  const int line1 = layout.footer_top + 10, line2 = line1 + text_height + 10;
+  const int numbers_width = layout.wide ? layout.width - 2 * gap : 2 * pw + gap;
+  centred_text(image, gap, numbers_width, line1,
                fmt::format("hausdorff {:.2f}%  rms {:.3f}%  of the diagonal", 100 * measure.distance.hausdorff / diagonal,
                            100 * measure.distance.rms / diagonal));
-  centred_text(image, x[0], left_width, line2,
+  centred_text(image, gap, numbers_width, line2,
                fmt::format("euler characteristic {}{} > {}, components {} > {}", in.euler_characteristic,
                            in.pinches > 0 ? fmt::format(" ({} {})", in.pinches, in.pinches == 1 ? "pinch" : "pinches") : std::string(),
                            measure.euler_characteristic, in.components, measure.components));
-  const int bar_left = x[2] + 20, bar_right = x[2] + panel_size - 20;
+  const int bar_top = layout.wide ? line2 + text_height + 10 : line1;
+  const int bar_x = layout.wide ? (layout.width - panel_size) / 2 : layout.corner(2, 0).first;
+  const int bar_left = bar_x + 20, bar_right = bar_x + panel_size - 20;
   for (int px = bar_left; px < bar_right; ++px)
-    image.rectangle(px, line1, px + 1, line1 + 14, sequential_colour(double(px - bar_left) / (bar_right - bar_left - 1)));
-  image.text(bar_left, line2, "0", text_scale, ink);
+    image.rectangle(px, bar_top, px + 1, bar_top + 14, sequential_colour(double(px - bar_left) / (bar_right - bar_left - 1)));
+  const int bar_labels = layout.wide ? bar_top + 2 : line2;
   const std::string high = fmt::format("{:.2f}% of the diagonal", 100 * largest / diagonal);
-  image.text(bar_right - RasterImage::text_width(high, text_scale), line2, high, text_scale, ink);
+  if (layout.wide) {
+    image.text(bar_left - 10 - RasterImage::text_width("0", text_scale), bar_labels, "0", text_scale, ink);
+    image.text(bar_right + 10, bar_labels, high, text_scale, ink);
+  } else {
+    image.text(bar_left, bar_labels, "0", text_scale, ink);
+    image.text(bar_right - RasterImage::text_width(high, text_scale), bar_labels, high, text_scale, ink);
+  }
   return image.png();
 }
 
