@@ -556,6 +556,45 @@ TEST(MeshReader, BigEndianFloatQuadsAndObjPolygons) {
   EXPECT_THROW(read_mesh(temporary("x.stl")), InputError);
 }
 
+// A polygon that is not convex, or has three corners on a line, is cut
+// into triangles that each turn the polygon's way with positive area and
+// add up to its area (covering it once): a fan from the first corner
+// would fold over the L below, and leave a triangle of zero area in the
+// square with a corner in the middle of a side (CGAL's mpi.off, the
+// letters M, P, I as prisms, was refused for such triangles).
+TEST(MeshReader, PolygonsAreCutIntoTrianglesThatCoverThemOnce) {
+  const auto obj = temporary("polygons.obj");
+  struct Case {
+    const char* name;
+    std::vector<std::array<double, 2>> corners;
+    double area;  // by hand
+  };
+  const Case cases[] = {
+      {"an L, from its corner at the reflex one's side", {{2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}, {2, 0}}, 3.0},
+      {"a square with a corner on a side", {{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}}, 4.0},
+      {"a comb of two teeth", {{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}, 5.0},
+  };
+  for (const Case& c : cases) {
+    std::ofstream out(obj);
+    for (const auto& p : c.corners) out << "v " << p[0] << ' ' << p[1] << " 0\n";
+    out << 'f';
+    for (std::size_t k = 1; k <= c.corners.size(); ++k) out << ' ' << k;
+    out << '\n';
+    out.close();
+    const TriangleMesh m = read_mesh(obj);
+    ASSERT_EQ(m.triangles.size(), c.corners.size() - 2) << c.name;
+    double total = 0.0;
+    for (const auto& t : m.triangles) {
+      const Vec3 &a = m.vertices[std::size_t(t[0])], &b = m.vertices[std::size_t(t[1])], &d = m.vertices[std::size_t(t[2])];
+      const double signed_area = 0.5 * (b - a).cross(d - a).z();
+      EXPECT_GT(signed_area, 0.0) << c.name << ": triangle " << t[0] << ' ' << t[1] << ' ' << t[2];
+      total += signed_area;
+    }
+    EXPECT_DOUBLE_EQ(total, c.area) << c.name;
+  }
+  std::filesystem::remove(obj);
+}
+
 // An element without properties holds no data, whatever count its header
 // declares: it is skipped, not looped over (libFuzzer found a header
 // declaring 10^14 items of one, tests/data/fuzz/mesh_reader/, on which the

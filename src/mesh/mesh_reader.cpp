@@ -44,15 +44,123 @@ InputError too_many_triangles(std::size_t max_triangles, const std::string& wher
                     where);
 }
 
-/// Adds the fan triangulation of polygon `face` (0-based indices); throws
-/// too_many_triangles when the mesh would then hold more than max_triangles.
+/// The corners of a polygon in its plane: 2-D coordinates in which its
+/// outline runs counterclockwise (about Newell's normal, the polygon's
+/// vector area, which a non-planar or non-convex polygon also has).
+std::vector<std::array<double, 2>> polygon_in_its_plane(const TriangleMesh& mesh, const std::vector<std::int64_t>& face) {
+  Vec3 normal = Vec3::Zero();
+  for (std::size_t k = 0; k < face.size(); ++k)
+    normal += mesh.vertices[std::size_t(face[k])].cross(mesh.vertices[std::size_t(face[(k + 1) % face.size()])]);
+  const Vec3 n = normal.norm() > 0 ? Vec3(normal.normalized()) : Vec3::UnitZ();
+  const Vec3 u = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
+  const Vec3 w = n.cross(u);
+  std::vector<std::array<double, 2>> q(face.size());
+  for (std::size_t k = 0; k < face.size(); ++k) {
+    const Vec3& p = mesh.vertices[std::size_t(face[k])];
+    q[k] = {p.dot(u), p.dot(w)};
+  }
+  return q;
+}
+
+/// Twice the signed area of the plane triangle (a, b, c): positive when it
+/// turns counterclockwise, 0 when its corners are on a line.
+double turn(const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c) {
+  return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+/// The sine of the smallest angle that is told from a straight line: corners
+/// on a line in space come out of the projection into the plane a rounding
+/// error off it, and a triangle of them would have zero area in the mesh.
+constexpr double min_sine = 1e-9;
+
+/// Whether (a, b, c) turns counterclockwise by more than rounding (the sine
+/// of its angle at a above min_sine).
+bool turns_left(const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c) {
+  return turn(a, b, c) > min_sine * std::hypot(b[0] - a[0], b[1] - a[1]) * std::hypot(c[0] - a[0], c[1] - a[1]);
+}
+
+/// Whether p lies in the triangle (a, b, c) (counterclockwise) or within
+/// rounding of it: a corner on an ear's edge blocks the ear as one inside
+/// it does, else cutting the ear would leave the rest folded along that edge.
+bool in_or_on(const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c,
+              const std::array<double, 2>& p) {
+  const auto beside = [](const std::array<double, 2>& u, const std::array<double, 2>& v, const std::array<double, 2>& x) {
+    return turn(u, v, x) >= -min_sine * std::hypot(v[0] - u[0], v[1] - u[1]) * std::hypot(x[0] - u[0], x[1] - u[1]);
+  };
+  return beside(a, b, p) && beside(b, c, p) && beside(c, a, p);
+}
+
+/// Adds a triangulation of polygon `face` (0-based indices of mesh's
+/// vertices); throws too_many_triangles when the mesh would then hold more
+/// than max_triangles.
+///
+/// The fan from the first corner where it is valid (every convex polygon:
+/// the triangles (face[0], face[k], face[k + 1])); otherwise ear clipping
+/// in the polygon's plane, which cuts off a corner only where its triangle
+/// turns the outline's way with no other corner in it or on it. A fan
+/// would fold over a non-convex polygon (a letter's outline) and leave a
+/// triangle of zero area where three corners lie on a line, and the input
+/// checks would then refuse a mesh the file describes correctly. Where no
+/// such corner is left (an outline that crosses itself), the rest is
+/// fanned, and the checks say what is wrong with it.
 void add_polygon(TriangleMesh& mesh, const std::vector<std::int64_t>& face, std::size_t max_triangles,
                  const std::string& where) {
   if (face.size() >= 3 && face.size() - 2 > max_triangles - std::min(max_triangles, mesh.triangles.size()))
     throw too_many_triangles(max_triangles, where);
-  for (std::size_t k = 1; k + 1 < face.size(); ++k) {
-    mesh.triangles.push_back({std::int32_t(face[0]), std::int32_t(face[k]), std::int32_t(face[k + 1])});
+  const auto add = [&mesh](std::int64_t a, std::int64_t b, std::int64_t c) {
+    mesh.triangles.push_back({std::int32_t(a), std::int32_t(b), std::int32_t(c)});
+  };
+  const auto fan = [&add](const std::vector<std::int64_t>& corners) {
+    for (std::size_t k = 1; k + 1 < corners.size(); ++k) add(corners[0], corners[k], corners[k + 1]);
+  };
+  // Ear clipping costs a test of every corner per ear; beyond this many
+  // corners (no file seen has them) the fan is kept.
+  constexpr std::size_t max_clipped_corners = 2000;
+  if (face.size() == 3 || face.size() > max_clipped_corners) return fan(face);
+  const std::vector<std::array<double, 2>> q = polygon_in_its_plane(mesh, face);
+  // Convex and winding once (every corner turns left, the turns adding up
+  // to one full turn): the fan is valid.
+  bool convex = true;
+  double winding = 0.0;
+  for (std::size_t k = 0; k < q.size() && convex; ++k) {
+    const auto& a = q[(k + q.size() - 1) % q.size()];
+    const auto& b = q[k];
+    const auto& c = q[(k + 1) % q.size()];
+    convex = turns_left(a, b, c);
+    winding += std::atan2(turn(a, b, c), (b[0] - a[0]) * (c[0] - b[0]) + (b[1] - a[1]) * (c[1] - b[1]));
   }
+  constexpr double winding_tolerance = 1e-6;  // radians: rounding only
+  if (convex && std::abs(winding - 2 * M_PI) < winding_tolerance) return fan(face);
+
+  std::vector<std::size_t> left(face.size());  // positions in face of the corners not yet cut off
+  for (std::size_t k = 0; k < left.size(); ++k) left[k] = k;
+  const auto same_position = [&](std::size_t i, std::size_t j) {
+    return mesh.vertices[std::size_t(face[i])] == mesh.vertices[std::size_t(face[j])];
+  };
+  const auto is_ear = [&](std::size_t at) {
+    const std::size_t m = left.size();
+    const std::size_t a = left[(at + m - 1) % m], b = left[at], c = left[(at + 1) % m];
+    if (!turns_left(q[a], q[b], q[c])) return false;
+    for (const std::size_t k : left) {
+      if (k == a || k == b || k == c || same_position(k, a) || same_position(k, b) || same_position(k, c)) continue;
+      if (in_or_on(q[a], q[b], q[c], q[k])) return false;
+    }
+    return true;
+  };
+  while (left.size() > 3) {
+    // The corner after the first first, as the fan would cut it.
+    std::size_t at = 1;
+    while (at <= left.size() && !is_ear(at % left.size())) ++at;
+    if (at > left.size()) {
+      std::vector<std::int64_t> rest;
+      for (const std::size_t k : left) rest.push_back(face[k]);
+      return fan(rest);
+    }
+    at %= left.size();
+    add(face[left[(at + left.size() - 1) % left.size()]], face[left[at]], face[left[(at + 1) % left.size()]]);
+    left.erase(left.begin() + std::ptrdiff_t(at));
+  }
+  add(face[left[0]], face[left[1]], face[left[2]]);
 }
 
 // ---------------------------------------------------------------- PLY ---
