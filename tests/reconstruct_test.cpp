@@ -117,6 +117,52 @@ TEST(Pruning, SmallPiecesKeptAsLobes) {
   EXPECT_EQ(graph.edges.size(), 39u);
 }
 
+// The islands rule and its tips: a chain of 100 balls of radius 1 along x
+// (centres (0.4 i, 0, 0), each touching a diameter, θ = π) is the large
+// piece; four small pieces (under 5% of 100 vertices) stand off it.
+// - A teat: three balls of radius 0.1 at (20, 1.3 / 1.5 / 1.7, 0), joined.
+//   The chain ball at (20, 0, 0) is the nearest: at the last centre it
+//   reaches 1 − 1.7 = −0.7, so that ball reaches 0.1 + 0.7 = 0.8 beyond,
+//   at least 0.5 and 2 × 0.1: kept.
+// - Noise on the body's boundary: radius 0.2 at (10, 1, 0), held 1 − 1 = 0
+//   deep by the chain ball at x = 10: reaches 0.2, its own radius: dropped.
+// - Thick and short: radius 0.4 at (30, 1.2, 0): reaches 0.4 + 0.2 = 0.6 ≥
+//   0.5 but under 2 × 0.4 = 0.8: dropped.
+// - Thin and short: radius 0.05 at (4.8, 1.1, 0): reaches 0.05 + 0.1 = 0.15
+//   ≥ 2 × 0.05 but under 0.5: dropped.
+// Without tips (reach 0) all four go, the teat with them.
+TEST(Pruning, SmallPiecesKeptAsThinProtrusions) {
+  MedialGraph graph;
+  const auto add = [&graph](const Vec3& centre, double radius) {
+    const auto first = std::int32_t(graph.samples.size());
+    graph.samples.push_back(centre - Vec3(radius, 0, 0));
+    graph.samples.push_back(centre + Vec3(radius, 0, 0));
+    graph.samples.push_back(centre + Vec3(0, radius, 0));
+    graph.samples.push_back(centre + Vec3(0, 0, radius));
+    graph.vertices.push_back({centre, radius, {first, first + 1, first + 2, first + 3}});
+  };
+  for (int i = 0; i < 100; ++i) add(Vec3(0.4 * i, 0, 0), 1.0);
+  for (std::int32_t i = 0; i + 1 < 100; ++i) graph.edges.push_back({i, i + 1, {0, 1, 2}});
+  for (const double y : {1.3, 1.5, 1.7}) add(Vec3(20, y, 0), 0.1);
+  graph.edges.push_back({100, 101, {0, 1, 2}});
+  graph.edges.push_back({101, 102, {0, 1, 2}});
+  add(Vec3(10, 1, 0), 0.2);
+  add(Vec3(30, 1.2, 0), 0.4);
+  add(Vec3(4.8, 1.1, 0), 0.05);
+  MedialGraph without = graph;
+  const PruningReport dropped = prune_medial_graph(without, std::numbers::pi / 4);
+  EXPECT_EQ(dropped.small_pieces_removed, 4u);
+  EXPECT_EQ(dropped.tips_kept, 0u);
+  EXPECT_EQ(without.vertices.size(), 100u);
+  const PruningReport report = prune_medial_graph(graph, std::numbers::pi / 4, 0.05, 0.0, LobeOptions{}, TipOptions{0.5, 2.0});
+  EXPECT_EQ(report.vertices_removed, 0u);
+  EXPECT_EQ(report.small_pieces_removed, 3u);
+  EXPECT_EQ(report.tips_kept, 1u);
+  ASSERT_EQ(graph.vertices.size(), 103u);
+  EXPECT_EQ(graph.vertices[102].centre, Vec3(20, 1.7, 0));
+  EXPECT_EQ(graph.edges.size(), 101u);
+}
+
 // The islands rule measures a piece against the largest piece of its own
 // part of the surface: the chain of 40 balls (part 0) and, 100 away, a
 // separate small part (part 1, a bone beside a foot) whose medial graph is

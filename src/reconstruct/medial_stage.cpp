@@ -54,18 +54,26 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   sampling.diagonal_divisions = m.sample_divisions;
   MedialGraph graph = medial_graph(surface, 20, sampling);
   MedialPathReport r;
+  std::size_t tips_kept = 0;
   const auto prune = [&](MedialGraph& g) {
     if (o.progress)
       o.progress(fmt::format("medial path: {} samples, {} inner Voronoi vertices", g.samples.size(),
                              g.vertices.size()));
     r.samples = g.samples.size();
     r.vertices = g.vertices.size();
-    const PruningReport pruned = prune_medial_graph(g, m.prune_angle_degrees * std::numbers::pi / 180.0, 0.05,
-                                                    std::max(m.prune_span, o.prune_span) * diagonal, m.lobes);
+    const PruningReport pruned =
+        prune_medial_graph(g, m.prune_angle_degrees * std::numbers::pi / 180.0, 0.05,
+                           std::max(m.prune_span, o.prune_span) * diagonal, m.lobes,
+                           TipOptions{m.tip_reach * diagonal / m.sample_divisions, m.tip_thinness});
     r.pruned = pruned.vertices_removed;
+    tips_kept = pruned.tips_kept;
     if (o.progress && pruned.lobes_kept > 0)
       o.progress(fmt::format("medial path: {} small pieces kept as lobes (deep balls outside the large pieces')",
                              pruned.lobes_kept));
+    if (o.progress && pruned.tips_kept > 0)
+      o.progress(fmt::format("medial path: {} small pieces kept as thin protrusions (a ball reaching {} sample "
+                             "spacings and {} radii beyond the large pieces')",
+                             pruned.tips_kept, m.tip_reach, m.tip_thinness));
   };
   prune(graph);
   // Thin walls sampled finer (thin_walls.hpp), the rest of the shape as it
@@ -466,6 +474,33 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
       if (after < before) {
         stage.medial = std::move(filled.medial);
         stage.meshed = std::move(filled.meshed);
+      }
+    }
+  }
+  // A thin protrusion kept (TipOptions) that leaves the result farther
+  // from the input's topology than the input has: its piece, apart from
+  // the body's sheet, may meet the body's surface round a loop (homer's
+  // ears: a tunnel). The medial path again without the tips, kept where
+  // its topology is closer (the result is then the one before the tips).
+  if (tips_kept > 0 && stage.meshed) {
+    const long long with = topology_defects(input_topology, mesh_topology(*stage.meshed));
+    if (with > 0) {
+      if (o.progress)
+        o.progress(fmt::format("medial path: {} topology defects with the thin protrusions kept: the medial path "
+                               "again without them",
+                               with));
+      ReconstructOptions without = o;
+      without.medial.tip_reach = 0.0;
+      MedialPathReport again_report;
+      Stage again = medial_stage(surface, without, &again_report);
+      const long long after =
+          again.meshed ? topology_defects(input_topology, mesh_topology(*again.meshed)) : with;
+      if (o.progress)
+        o.progress(fmt::format("medial path: topology defects without the thin protrusions {} against {}: {}", after,
+                               with, after < with ? "kept" : "not kept"));
+      if (after < with) {
+        if (report != nullptr) *report = again_report;
+        return again;
       }
     }
   }

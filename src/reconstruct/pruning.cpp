@@ -79,6 +79,20 @@ void compact(MedialGraph& graph, const std::vector<bool>& keep) {
 /// θ = 2 asin(|p⁻p⁺| / 2ρ) from the span |p⁻p⁺|, the ratio clamped to 1.
 double span_angle(double span, double rho) { return 2.0 * std::asin(std::min(1.0, span / (2.0 * rho))); }
 
+/// Whether ball `v` reaches at least `reach` beyond every ball of `large`
+/// (vertex indices, largest radius first): r − max (ρ − |centre distance|)
+/// ≥ reach, its radius less the most any of them holds its centre in.
+bool reaches_beyond(const MedialGraph& graph, const std::vector<std::size_t>& large, std::size_t v, double reach) {
+  const MedialVertex& ball = graph.vertices[v];
+  for (const std::size_t k : large) {
+    const MedialVertex& other = graph.vertices[k];
+    // No ball after this one holds the centre deeper than its radius.
+    if (other.radius <= ball.radius - reach) return true;
+    if (other.radius - (other.centre - ball.centre).norm() > ball.radius - reach) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 double pruning_angle(const Vec3& p_minus, const Vec3& p_plus, double rho) {
@@ -101,7 +115,7 @@ double vertex_angle(const MedialGraph& graph, std::size_t v) {
 }
 
 PruningReport prune_medial_graph(MedialGraph& graph, double threshold, double minimum_piece, double minimum_span,
-                                 const LobeOptions& lobes) {
+                                 const LobeOptions& lobes, const TipOptions& tips) {
   const std::size_t n = graph.vertices.size();
   PruningReport report;
   std::vector<bool> keep(n);
@@ -151,11 +165,26 @@ PruningReport prune_medial_graph(MedialGraph& graph, double threshold, double mi
     }
     lobe[r] = ball.radius - covered >= lobes.outside * ball.radius;
   }
+  // The tips (TipOptions): a small piece one of whose balls reaches far
+  // enough beyond every ball of the large pieces and of the lobes.
+  std::map<std::int32_t, bool> tip;
+  if (tips.reach > 0.0) {
+    std::vector<std::size_t> large;
+    for (std::size_t v = 0; v < n; ++v)
+      if (root[v] >= 0 && (!small(root[v]) || lobe[root[v]])) large.push_back(v);
+    std::stable_sort(large.begin(), large.end(), [&graph](std::size_t a, std::size_t b) {
+      return graph.vertices[a].radius > graph.vertices[b].radius;
+    });
+    for (std::size_t v = 0; v < n; ++v)
+      if (root[v] >= 0 && small(root[v]) && !lobe[root[v]] && !tip[root[v]] &&
+          reaches_beyond(graph, large, v, std::max(tips.reach, tips.thinness * graph.vertices[v].radius)))
+        tip[root[v]] = true;
+  }
   for (std::size_t v = 0; v < n; ++v) {
-    if (keep[v] && small(root[v]) && !lobe[root[v]]) keep[v] = false;
+    if (keep[v] && small(root[v]) && !lobe[root[v]] && !tip[root[v]]) keep[v] = false;
   }
   for (const auto& [r, s] : size) {
-    if (small(r)) ++(lobe[r] ? report.lobes_kept : report.small_pieces_removed);
+    if (small(r)) ++(lobe[r] ? report.lobes_kept : tip[r] ? report.tips_kept : report.small_pieces_removed);
   }
   compact(graph, keep);
   return report;

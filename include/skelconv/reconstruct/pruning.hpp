@@ -41,6 +41,8 @@ struct PruningReport {
   std::size_t small_pieces_removed = 0;
   /// Small pieces kept as lobes (LobeOptions).
   std::size_t lobes_kept = 0;
+  /// Small pieces kept as thin protrusions (TipOptions).
+  std::size_t tips_kept = 0;
 };
 
 /// When a small piece is a lobe of the shape and not noise. A ball on a
@@ -58,6 +60,25 @@ struct LobeOptions {
   double outside = 0.5;
 };
 
+/// When a small piece is a thin protrusion of the shape and not noise. A
+/// teat, a horn's tip, an ear: where it meets the body the surface is
+/// concave, the balls there see their contacts under small angles, and the
+/// angle cuts the protrusion's piece off the body's sheet; the islands rule
+/// would then drop it, and the medial mesh stop at the body (CGAL's cow:
+/// the udder's four teats, 51 to 60 vertices each, gone). A small piece is
+/// kept when one of its balls (radius r) reaches beyond every ball of the
+/// large pieces and of the lobes (r − max over their balls of (ρ − |centre
+/// distance|), as LobeOptions) by at least `reach` (length units) and at
+/// least `thinness` × r. Noise pieces are balls near the surface whose
+/// centres sit about on the large balls' boundary: they reach about their
+/// own radius (0.8–1.4 r on the real shapes), and an isolated ball deeper
+/// than that would be a lobe; a protrusion longer than it is thick reaches
+/// several radii (the cow's teats 4 r). 0 for `reach`: no piece is kept.
+struct TipOptions {
+  double reach = 0.0;
+  double thinness = 2.0;
+};
+
 /// θ of vertex `v` of `graph` (p± = the longest edge of its tetrahedron).
 double vertex_angle(const MedialGraph& graph, std::size_t v);
 
@@ -69,7 +90,8 @@ double contact_span(const MedialGraph& graph, std::size_t v);
 /// below `minimum_span` (length units; 0: no such test), then the pieces
 /// smaller than `minimum_piece` (in [0, 1]) × the largest in their part of
 /// the surface (MedialGraph::sample_parts; a vertex's part is the one most
-/// of its four samples lie on) but those that `lobes` keeps; renumbers.
+/// of its four samples lie on) but those that `lobes` or `tips` keeps;
+/// renumbers.
 ///
 /// Why a span as well as the angle: θ is scale-free, so noise larger than
 /// the sample spacing (a folded surface) makes whole small-scale medial
@@ -79,6 +101,7 @@ double contact_span(const MedialGraph& graph, std::size_t v);
 /// than about twice the noise amplitude cannot be told from noise (Chazal
 /// & Lieutier's λ-medial axis keeps the balls whose contacts span ≥ λ).
 PruningReport prune_medial_graph(MedialGraph& graph, double threshold, double minimum_piece = 0.05,
-                                 double minimum_span = 0.0, const LobeOptions& lobes = {});
+                                 double minimum_span = 0.0, const LobeOptions& lobes = {},
+                                 const TipOptions& tips = {});
 
 }  // namespace skelconv::reconstruct
