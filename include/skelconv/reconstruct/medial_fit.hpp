@@ -84,9 +84,9 @@ struct MedialFitOptions {
   /// off) the bounded step overshoots, by 91% at a cube's corner
   /// (`MedialFit.TheFirstStageMeasuresSharpCornersWithANewtonStep`). 1: the
   /// least squares then weigh each point by about its true distance, which
-  /// the measure's RMS is: it fell on 17 of 18 real shapes (CGAL's rotor
-  /// 0.447% → 0.373%, the coupling 0.457% → 0.409%; the cow rose, 0.231% →
-  /// 0.290%; docs/reconstruction_medial.md, "One Newton step in both
+  /// the measure's RMS is: it fell on 16 of 18 real shapes (CGAL's rotor
+  /// 0.447% → 0.373%, the coupling 0.457% → 0.409%; the elk's and the cow's
+  /// rose; docs/reconstruction_medial.md, "One Newton step in both
   /// stages"). 2 steps, on earlier code, opened a tunnel in homer (χ 2 →
   /// 0). Each step is one more field evaluation a point.
   int newton_steps = 1;
