@@ -456,6 +456,7 @@ TEST(MedialFit, TheFirstStageMeasuresSharpCornersWithANewtonStep) {
   ASSERT_EQ(points.size(), 26u);
   const ReconstructOptions o;
   MedialFitOptions fit;
+  fit.newton_steps = 1;                  // --medial-newton-steps 1
   fit.rounds = 0, fit.worst_rounds = 0;  // the distance before any round
   MedialFitReport report;
   fit_medial_mesh(ball, points, {}, written_field(o), fit, &report);

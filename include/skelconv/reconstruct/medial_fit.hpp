@@ -77,19 +77,24 @@ struct MedialFitOptions {
   /// as on a medial axis); each step's radii are lowered to keep it.
   double max_radius_slope = 1.0;
   /// Newton steps along the gradient after the first, for each point's
-  /// distance, in both stages: where the field saturates (deep inside a
-  /// crease the blend filled) the first-order distance falls short, by
-  /// nearly half at the hand's worst vertex (0.024 against 0.042), and
-  /// where it fades (beyond a sharp edge or corner the convolution rounds
-  /// off) the bounded step overshoots, by 91% at a cube's corner
-  /// (`MedialFit.TheFirstStageMeasuresSharpCornersWithANewtonStep`). 1: the
-  /// least squares then weigh each point by about its true distance, which
+  /// distance, in both stages (`skeletonize --medial-newton-steps`): where
+  /// the field saturates (deep inside a crease the blend filled) the
+  /// first-order distance falls short, by nearly half at the hand's worst
+  /// vertex (0.024 against 0.042), and where it fades (beyond a sharp edge
+  /// or corner the convolution rounds off) the bounded step overshoots, by
+  /// 91% at a cube's corner
+  /// (`MedialFit.TheFirstStageMeasuresSharpCornersWithANewtonStep`). With
+  /// 1 the least squares weigh each point by about its true distance, which
   /// the measure's RMS is: it fell on 16 of 18 real shapes (CGAL's rotor
   /// 0.447% → 0.373%, the coupling 0.457% → 0.409%; the elk's and the cow's
   /// rose; docs/reconstruction_medial.md, "One Newton step in both
-  /// stages"). 2 steps, on earlier code, opened a tunnel in homer (χ 2 →
-  /// 0). Each step is one more field evaluation a point.
-  int newton_steps = 1;
+  /// stages"). 0 by default all the same: the fit converges more slowly
+  /// from the more honest start, and a coarse sphere (80 triangles) through
+  /// the medial path ends at RMS 0.447% instead of 0.270%, over the 0.4%
+  /// goal (`cli.skeletonize.inside_out_repair`). 2 steps, on earlier code,
+  /// opened a tunnel in homer (χ 2 → 0). Each step is one more field
+  /// evaluation a point.
+  int newton_steps = 0;
   /// The Newton steps after the first of the second stage (at least
   /// newton_steps, which counts in both stages): its points are the worst,
   /// where the field saturates most. 1: on eighteen real shapes it lowered
@@ -97,8 +102,8 @@ struct MedialFitOptions {
   /// 2.01% → 1.48%) and raised it on four (the tetrahedron 1.78% → 2.31%,
   /// the triceratops 2.15% → 2.38%); 2 was no better on the hand and homer
   /// (docs/reconstruction_medial.md, "The fit"; measured with no Newton
-  /// step in the first stage: with newton_steps = 1, the default, both
-  /// stages take the same one).
+  /// step in the first stage: with newton_steps = 1 both stages take the
+  /// same one).
   int worst_newton_steps = 1;
   /// Rounds at most of the second stage, on the L^p mean of the distances
   /// (p = worst_exponent) instead of Huber's loss: the farther a point, the
