@@ -12,7 +12,9 @@
 //     ball of radius R around P misses Ω, and f = 0, ∇f = 0 exactly, as for
 //     a segment. The distance is |z| (the height of P above the plane) when
 //     the foot of P in the plane lies inside Ω, else the distance from P to
-//     the nearest edge; computed in double: a point
+//     the nearest edge; the edges are asked first (a few flops each), the
+//     foot's location only when every edge is out of reach; computed in
+//     double: a point
 //     misjudged by rounding lies where the kernel and its derivative vanish
 //     (the compact kernels here are at least (1 − r²/R²)²).
 //   - inverse kernels: P in the closed polygon. The integrand r^(-i) is not
