@@ -2,7 +2,10 @@
 // Polygon primitive (internal to skelconv_runtime).
 //
 // Implemented with CGAL (exact predicates on the given doubles: no rounding
-// decides a "touches or not"). Kept behind this small interface, in its own
+// decides a "touches or not"); locate_point first tries a floating-point
+// filter with a proven error bound, which answers exactly for every point
+// not within a few units in the last place of an edge's line, and calls
+// CGAL for the rest. Kept behind this small interface, in its own
 // translation unit, because CGAL needs -frounding-math, which must not reach
 // the generated kernels compiled into segment.cpp.
 #pragma once

@@ -237,16 +237,29 @@ Polygon::Polygon(std::span<const Vec3> vertices, const KernelSpec& kernel) : ker
   support_radius_ = kernels::support_radius(kernels::make_radial_kernel(kernel));
   if (std::isfinite(support_radius_)) {
     detail::require_support_radius_in_frame(frame_.scaled(kernel.R, 1), "polygon's diameter");
+    // What support_misses_polygon reads at every point, computed once.
+    frame_support_radius_ = frame_.scaled(support_radius_, 1);
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec3 edge = to_vec3(vertex_arrays_[(k + 1) % n]) - to_vec3(vertex_arrays_[k]);
+      frame_edges_.push_back(edge);
+      frame_edge_length2_.push_back(edge.squaredNorm());
+    }
   }
   singular_at_zero_ = facts.singular_at_zero;
+  // Each level's s and R in the frame, once, rather than at every point.
+  const auto in_polygon_frame = [&](KernelSpec level) {
+    level.s = frame_.scaled(level.s, -2);
+    level.R = frame_.scaled(level.R, 1);
+    return level;
+  };
   if (facts.compact_levels.empty()) {
     require_supported_degree(kernel);
-    levels_.push_back({1.0, kernel});
+    levels_.push_back({1.0, in_polygon_frame(kernel)});
   } else {
     for (const kernels::CompactLevel& level : facts.compact_levels) {
       const KernelSpec compact = KernelSpec::compact(level.degree, kernel.R);
       require_supported_degree(compact);  // the generator's polygon degrees must include it
-      levels_.push_back({double(level.numerator) / level.denominator, compact});
+      levels_.push_back({double(level.numerator) / level.denominator, in_polygon_frame(compact)});
     }
   }
 }
@@ -259,8 +272,8 @@ PolygonInput<double> Polygon::closed_form_input(const KernelSpec& level) const {
   input.normal = to_array(normal_);
   input.family = level.family;
   input.degree = level.degree;
-  input.s = frame_.scaled(level.s, -2);
-  input.R = frame_.scaled(level.R, 1);
+  input.s = level.s;  // in the frame already (levels_)
+  input.R = level.R;
   return input;
 }
 
@@ -302,22 +315,24 @@ bool Polygon::in_closed_polygon(const Vec3& frame_p) const {
 }
 
 bool Polygon::support_misses_polygon(const Vec3& frame_p) const {
-  // In the frame: the stored vertices are vertex_arrays_, R scaled with them.
-  const double R = frame_.scaled(support_radius_, 1);
-  const double z = normal_.dot(frame_p - to_vec3(vertex_arrays_.front()));
+  // The ball of radius R around P reaches the closed polygon iff it reaches
+  // an edge, or |z| < R and P's foot on the plane lies in the polygon (the
+  // distance is then |z|). The answer is that "or", whatever the order of
+  // its terms: the edges come first, a few flops each, and the foot's
+  // location (exact predicates) only where every edge is out of reach.
+  const double R = frame_support_radius_;
+  const Vec3 first = to_vec3(vertex_arrays_.front());
+  const double z = normal_.dot(frame_p - first);
   if (std::abs(z) >= R) return true;
-  const Vec3 foot = frame_p - z * normal_;
-  if (detail::locate_point(projected_vertices_, project_along_axis(foot, dropped_axis_)) !=
-      detail::PointLocation::outside) {
-    return false;  // distance |z| < R
-  }
   for (std::size_t k = 0; k < vertex_arrays_.size(); ++k) {
     const Vec3 a = to_vec3(vertex_arrays_[k]);
-    const Vec3 edge = to_vec3(vertex_arrays_[(k + 1) % vertex_arrays_.size()]) - a;
-    const double t = std::clamp(edge.dot(frame_p - a) / edge.squaredNorm(), 0.0, 1.0);
+    const Vec3& edge = frame_edges_[k];
+    const double t = std::clamp(edge.dot(frame_p - a) / frame_edge_length2_[k], 0.0, 1.0);
     if ((frame_p - (a + t * edge)).squaredNorm() < R * R) return false;
   }
-  return true;
+  const Vec3 foot = frame_p - z * normal_;
+  return detail::locate_point(projected_vertices_, project_along_axis(foot, dropped_axis_)) ==
+         detail::PointLocation::outside;
 }
 
 double Polygon::restore_value(double f, const char* function, const Vec3& p) const {

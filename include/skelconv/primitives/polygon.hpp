@@ -12,7 +12,9 @@
 //     ball of radius R around P misses Ω, and f = 0, ∇f = 0 exactly, as for
 //     a segment. The distance is |z| (the height of P above the plane) when
 //     the foot of P in the plane lies inside Ω, else the distance from P to
-//     the nearest edge; computed in double: a point
+//     the nearest edge; the edges are asked first (a few flops each), the
+//     foot's location only when every edge is out of reach; computed in
+//     double: a point
 //     misjudged by rounding lies where the kernel and its derivative vanish
 //     (the compact kernels here are at least (1 − r²/R²)²).
 //   - inverse kernels: P in the closed polygon. The integrand r^(-i) is not
@@ -146,7 +148,7 @@ class Polygon {
   /// Finite support: the ball of radius R around P misses the closed polygon (P in the frame).
   bool support_misses_polygon(const Vec3& frame_p) const;
   /// The closed forms' view of this polygon, in the frame (spans
-  /// vertex_arrays_), with the generated kernel `level` (scaled to the frame).
+  /// vertex_arrays_), with the generated kernel `level` (one of levels_).
   PolygonInput<double> closed_form_input(const KernelSpec& level) const;
   /// Σ_j c_j × closed form j at P in the frame (a family given as compact
   /// levels, or one level of weight 1): f', and ∇f' into `gradient` when not null.
@@ -168,10 +170,14 @@ class Polygon {
   KernelSpec kernel_;
   /// The generated kernels whose weighted sum is the field: {1, kernel_} for
   /// the families of the generated table, {c_j, k_R^(i_j)} for a trait with
-  /// compact_levels (soft, wyvill). World units: scaled into the frame by
-  /// closed_form_input.
+  /// compact_levels (soft, wyvill). Their s and R in the frame (frame_).
   std::vector<std::pair<double, KernelSpec>> levels_;
   double support_radius_ = 0.0;  ///< from the trait, world units: K = 0 beyond (+inf: none)
+  /// Finite support only: support_radius_ in the frame, and each edge
+  /// vertex_arrays_[k] → [k + 1] with its squared length (support_misses_polygon).
+  double frame_support_radius_ = 0.0;
+  std::vector<Vec3> frame_edges_;
+  std::vector<double> frame_edge_length2_;
   bool singular_at_zero_ = false;
   /// The vertices in the frame projected along normal_'s largest axis
   /// (dropped_axis_), keeping the other two in cyclic order:
