@@ -79,6 +79,17 @@ TEST(Pruning, ContactSpan) {
   EXPECT_EQ(graph.vertices[0].radius, 1.0);
 }
 
+/// A medial vertex at `centre` of `radius`, its four contact samples on the
+/// sphere (two opposite along x, one along y, one along z).
+void add_ball(MedialGraph& graph, const Vec3& centre, double radius) {
+  const auto first = std::int32_t(graph.samples.size());
+  graph.samples.push_back(centre - Vec3(radius, 0, 0));
+  graph.samples.push_back(centre + Vec3(radius, 0, 0));
+  graph.samples.push_back(centre + Vec3(0, radius, 0));
+  graph.samples.push_back(centre + Vec3(0, 0, radius));
+  graph.vertices.push_back({centre, radius, {first, first + 1, first + 2, first + 3}});
+}
+
 // The islands rule and its lobes: a chain of 40 balls of radius 1 along x
 // (centres (i, 0, 0), each touching a diameter, θ = π) is the large piece;
 // three single vertices are islands (1 < 5% of 40). A ball of radius 2 at
@@ -90,14 +101,7 @@ TEST(Pruning, ContactSpan) {
 // (60, 0, 0) is shallow (0.2 < 0.5): dropped. Without lobes all three go.
 TEST(Pruning, SmallPiecesKeptAsLobes) {
   MedialGraph graph;
-  const auto add = [&graph](const Vec3& centre, double radius) {
-    const auto first = std::int32_t(graph.samples.size());
-    graph.samples.push_back(centre - Vec3(radius, 0, 0));
-    graph.samples.push_back(centre + Vec3(radius, 0, 0));
-    graph.samples.push_back(centre + Vec3(0, radius, 0));
-    graph.samples.push_back(centre + Vec3(0, 0, radius));
-    graph.vertices.push_back({centre, radius, {first, first + 1, first + 2, first + 3}});
-  };
+  const auto add = [&graph](const Vec3& centre, double radius) { add_ball(graph, centre, radius); };
   for (int i = 0; i < 40; ++i) add(Vec3(i, 0, 0), 1.0);
   for (std::int32_t i = 0; i + 1 < 40; ++i) graph.edges.push_back({i, i + 1, {0, 1, 2}});
   add(Vec3(45, 0, 0), 2.0);
@@ -133,14 +137,7 @@ TEST(Pruning, SmallPiecesKeptAsLobes) {
 // Without tips (reach 0) all four go, the teat with them.
 TEST(Pruning, SmallPiecesKeptAsThinProtrusions) {
   MedialGraph graph;
-  const auto add = [&graph](const Vec3& centre, double radius) {
-    const auto first = std::int32_t(graph.samples.size());
-    graph.samples.push_back(centre - Vec3(radius, 0, 0));
-    graph.samples.push_back(centre + Vec3(radius, 0, 0));
-    graph.samples.push_back(centre + Vec3(0, radius, 0));
-    graph.samples.push_back(centre + Vec3(0, 0, radius));
-    graph.vertices.push_back({centre, radius, {first, first + 1, first + 2, first + 3}});
-  };
+  const auto add = [&graph](const Vec3& centre, double radius) { add_ball(graph, centre, radius); };
   for (int i = 0; i < 100; ++i) add(Vec3(0.4 * i, 0, 0), 1.0);
   for (std::int32_t i = 0; i + 1 < 100; ++i) graph.edges.push_back({i, i + 1, {0, 1, 2}});
   for (const double y : {1.3, 1.5, 1.7}) add(Vec3(20, y, 0), 0.1);
