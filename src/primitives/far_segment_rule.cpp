@@ -16,7 +16,7 @@
 namespace skelconv {
 
 // Named, so that nothing here meets another file's names in a unity build.
-namespace far_rule {
+namespace detail::far_rule {
 
 /// The n-node Gauss–Legendre rule on [0, 1] (weights summing to 1).
 struct Rule {
@@ -240,11 +240,11 @@ double half_power(double x, int i) {
 }
 
 }  // namespace
-}  // namespace far_rule
+}  // namespace detail::far_rule
 
 std::optional<FarSegmentRule> FarSegmentRule::make(const Vec3& a, const Vec3& b, int degree, double s,
                                                    std::span<const double> weight) {
-  if (degree < 1 || degree > far_rule::max_degree || weight.empty() || weight.size() > Integrand::weight_count) {
+  if (degree < 1 || degree > detail::far_rule::max_degree || weight.empty() || weight.size() > Integrand::weight_count) {
     return std::nullopt;
   }
   for (double w : weight) {
@@ -266,7 +266,7 @@ std::optional<FarSegmentRule> FarSegmentRule::make(const Vec3& a, const Vec3& b,
   for (int k = 0; k <= integrand.weight_degree; ++k) mean += integrand.w[std::size_t(k)] / (k + 1);
   rule.lower_front_ = length * mean;
   // L'^(2m) / (L Ω) = (s L²)^m / L, divided by w_0 where w is that constant.
-  rule.f_factor_ = far_rule::half_power(s * length * length, degree) / length;
+  rule.f_factor_ = detail::far_rule::half_power(s * length * length, degree) / length;
   rule.weight_varies_ = integrand.weight_degree > 0;
   if (!rule.weight_varies_) rule.f_factor_ /= weight[0];
   rule.gradient_factor_ = std::sqrt(s) * length;  // g L' = √s L
@@ -279,7 +279,7 @@ std::optional<FarSegmentRule> FarSegmentRule::make(const Vec3& a, const Vec3& b,
 
 std::optional<FarSegmentRule> FarSegmentRule::make_scalis(const Vec3& a, const Vec3& b, int degree, double sigma,
                                                           double tau0, double tau1, double field_scale) {
-  if (degree < 1 || degree > far_rule::max_scalis_degree || !(tau0 > 0.0) || !(tau1 > 0.0)) return std::nullopt;
+  if (degree < 1 || degree > detail::far_rule::max_scalis_degree || !(tau0 > 0.0) || !(tau1 > 0.0)) return std::nullopt;
   FarSegmentRule rule;
   Integrand& integrand = rule.integrand_;
   integrand.scalis = true;
@@ -299,7 +299,7 @@ std::optional<FarSegmentRule> FarSegmentRule::make_scalis(const Vec3& a, const V
   // ends: no cancellation when the radii are close.
   const double u0 = integrand.c0 / c_max, u1 = c_end / c_max;
   double mean = 0;
-  for (int k = 0; k < degree; ++k) mean += far_rule::power(u0, k) * far_rule::power(u1, degree - 1 - k);
+  for (int k = 0; k < degree; ++k) mean += detail::far_rule::power(u0, k) * detail::far_rule::power(u1, degree - 1 - k);
   mean /= degree;
   const double scale = field_scale * sigma;  // Ω = scale c_max^(i−1)
   rule.lower_front_ = length * scale * mean / c_max;  // L Ω ∫(c/c_max)^(i−1) / c_max^i
@@ -309,7 +309,7 @@ std::optional<FarSegmentRule> FarSegmentRule::make_scalis(const Vec3& a, const V
   rule.bound_power_ = degree - 1;
   rule.weight_varies_ = integrand.c1 != 0.0 && degree > 1;
   // L'^(2m) / (L Ω) = (L'/c_max)^(2m) c_max / (L scale).
-  rule.f_factor_ = far_rule::half_power(lifted * lifted / rule.q_unit_, degree) * c_max / (length * scale);
+  rule.f_factor_ = detail::far_rule::half_power(lifted * lifted / rule.q_unit_, degree) * c_max / (length * scale);
   rule.gradient_factor_ = lifted / c_min;  // g L' = L' / (σ min τ)
   rule.front_ = length * scale;
   rule.gradient_front_ = -double(degree);  // ∂Q^(−i/2)/∂P = −i Q^(−i/2−1) (P − Γ)
@@ -326,7 +326,7 @@ bool FarSegmentRule::finish(const Vec3& a, const Vec3& b, int degree) {
   // for these polynomials (ω t² and ω c² have degree at most 11, the rule
   // 2 max_nodes − 1 = 39); the variance from the mean, a sum of squares.
   {
-    const far_rule::Rule& rule = far_rule::rules()[std::size_t(max_nodes)];
+    const detail::far_rule::Rule& rule = detail::far_rule::rules()[std::size_t(max_nodes)];
     const double c_max = std::sqrt(q_unit_);  // SCALIS: the larger end's c
     std::array<double, max_nodes> weight{};
     double mass = 0, first = 0;
@@ -334,7 +334,7 @@ bool FarSegmentRule::finish(const Vec3& a, const Vec3& b, int degree) {
       const double t = rule.t[j];
       double w = 1;
       if (integrand_.scalis) {
-        w = far_rule::power((integrand_.c0 + integrand_.c1 * t) / c_max, degree - 1);
+        w = detail::far_rule::power((integrand_.c0 + integrand_.c1 * t) / c_max, degree - 1);
       } else {
         w = integrand_.w[std::size_t(integrand_.weight_degree)];
         for (int k = integrand_.weight_degree - 1; k >= 0; --k) w = w * t + integrand_.w[std::size_t(k)];
@@ -359,22 +359,22 @@ bool FarSegmentRule::finish(const Vec3& a, const Vec3& b, int degree) {
                           gradient_factor_, front_, gradient_front_}) {
     if (!usable(constant)) return false;
   }
-  bins_ = far_rule::table_for(degree).data();  // built here, once per degree, not at the first point
-  (void)far_rule::rules();
+  bins_ = detail::far_rule::table_for(degree).data();  // built here, once per degree, not at the first point
+  (void)detail::far_rule::rules();
   return true;
 }
 
 FarSegmentRule::NodeRule FarSegmentRule::node_rule(bool scalis, int degree, int n, bool gradient) {
-  using far_rule::sum_nodes_table;
-  static constexpr auto values = sum_nodes_table<false, false>(std::make_integer_sequence<int, far_rule::max_degree>{});
-  static constexpr auto both = sum_nodes_table<true, false>(std::make_integer_sequence<int, far_rule::max_degree>{});
+  using detail::far_rule::sum_nodes_table;
+  static constexpr auto values = sum_nodes_table<false, false>(std::make_integer_sequence<int, detail::far_rule::max_degree>{});
+  static constexpr auto both = sum_nodes_table<true, false>(std::make_integer_sequence<int, detail::far_rule::max_degree>{});
   static constexpr auto scalis_values =
-      sum_nodes_table<false, true>(std::make_integer_sequence<int, far_rule::max_scalis_degree>{});
+      sum_nodes_table<false, true>(std::make_integer_sequence<int, detail::far_rule::max_scalis_degree>{});
   static constexpr auto scalis_both =
-      sum_nodes_table<true, true>(std::make_integer_sequence<int, far_rule::max_scalis_degree>{});
+      sum_nodes_table<true, true>(std::make_integer_sequence<int, detail::far_rule::max_scalis_degree>{});
   const std::size_t at = std::size_t(degree), pair = std::size_t(n / 2);
   return {scalis ? (gradient ? scalis_both : scalis_values)[at][pair] : (gradient ? both : values)[at][pair],
-          &far_rule::rules()[std::size_t(n)]};
+          &detail::far_rule::rules()[std::size_t(n)]};
 }
 
 bool FarSegmentRule::evaluate_nodes(const Vec3& p, int n, bool gradient, FieldSample& out) const {

@@ -2,7 +2,7 @@
 // program (cmake/embed_text.cmake writes their definitions at build time).
 #pragma once
 
-namespace skelconv::embedded {
+namespace skelconv::detail {
 
 extern const char view_template_html[];    ///< src/view/view_template.html
 extern const char view_march_glsl[];       ///< src/view/view_march.glsl
@@ -13,4 +13,4 @@ extern const char scalis_segment_inverse_glsl[];  ///< generated/glsl/scalis_seg
 extern const char scalis_segment_cauchy_glsl[];   ///< generated/glsl/scalis_segment_cauchy.glsl
 extern const char point_glsl[];                   ///< generated/glsl/point.glsl
 
-}  // namespace skelconv::embedded
+}  // namespace skelconv::detail

@@ -114,7 +114,7 @@ std::string mesh_preview_page(const Skeleton& skeleton, const ViewPageOptions& o
                                  {"normals", base64(normals)},
                                  {"indices", base64(indices)}}},
                                {"primitives", primitives}};
-  std::string page = embedded::view_template_html;
+  std::string page = detail::view_template_html;
   page = fill(page, "/*@@FRAGMENT_SHADER@@*/", "");
   return fill(page, "/*@@SKELETON_DATA@@*/", script_safe(data.dump(1)));
 }

@@ -116,12 +116,12 @@ double weight_minimum(std::span<const double> w) {
 /// ("segment_cauchy_i4_w1", "point_soft", "scalis_segment_inverse_i3").
 std::string_view glsl_file(std::string_view name) {
   const std::pair<std::string_view, const char*> files[] = {
-      {"segment_inverse_", embedded::segment_inverse_glsl},
-      {"segment_cauchy_", embedded::segment_cauchy_glsl},
-      {"segment_compact_", embedded::segment_compact_glsl},
-      {"scalis_segment_inverse_", embedded::scalis_segment_inverse_glsl},
-      {"scalis_segment_cauchy_", embedded::scalis_segment_cauchy_glsl},
-      {"point_", embedded::point_glsl}};
+      {"segment_inverse_", detail::segment_inverse_glsl},
+      {"segment_cauchy_", detail::segment_cauchy_glsl},
+      {"segment_compact_", detail::segment_compact_glsl},
+      {"scalis_segment_inverse_", detail::scalis_segment_inverse_glsl},
+      {"scalis_segment_cauchy_", detail::scalis_segment_cauchy_glsl},
+      {"point_", detail::point_glsl}};
   for (const auto& [prefix, text] : files)
     if (name.starts_with(prefix)) return text;
   return {};
@@ -496,8 +496,8 @@ std::string guarded_blocks(std::string_view file) {
 /// Every input struct and helper (the shader's input builders use all three
 /// structs), then the functions of the kernels in use, once each.
 std::string kernels_text(const std::vector<std::string>& kernels) {
-  std::string text = guarded_blocks(embedded::segment_inverse_glsl) +
-                     guarded_blocks(embedded::scalis_segment_inverse_glsl) + guarded_blocks(embedded::point_glsl);
+  std::string text = guarded_blocks(detail::segment_inverse_glsl) +
+                     guarded_blocks(detail::scalis_segment_inverse_glsl) + guarded_blocks(detail::point_glsl);
   for (const std::string& name : kernels) {
     text += glsl_function(glsl_file(name), name + "_f(") + "\n";
     text += glsl_function(glsl_file(name), name + "_f_and_grad(") + "\n";
@@ -577,12 +577,12 @@ std::string ray_march_page(const Skeleton& skeleton, const ViewPageOptions& opti
                                // Points: a cross 1/50 of the sphere's radius.
                                {"overlay", detail::overlay_lines(skeleton, frame, 0.02 * radius)},
                                {"primitives", primitives}};
-  std::string shader = embedded::view_march_glsl;
+  std::string shader = detail::view_march_glsl;
   shader = fill(shader, "//@@KERNELS@@", kernels_text(kernels));
   shader = fill(shader, "//@@DISPATCH@@", dispatch_text(kernels));
   shader = fill(shader, "/*@@PRIMITIVE_COUNT@@*/1", std::to_string(terms.size()));
   shader = "#version 300 es\nprecision highp float;\nprecision highp int;\n" + shader;
-  std::string page = embedded::view_template_html;
+  std::string page = detail::view_template_html;
   page = fill(page, "/*@@FRAGMENT_SHADER@@*/", script_safe(shader));
   return fill(page, "/*@@SKELETON_DATA@@*/", script_safe(data.dump(1)));
 }

@@ -61,7 +61,7 @@
 
 namespace skelconv {
 
-namespace far_rule {
+namespace detail::far_rule {
 struct Rule;  ///< the Gauss–Legendre nodes and weights of one n (far_segment_rule.cpp)
 /// Σ_j g_j ω̂(t_j) Q̂_j^(−i/2) and, with the gradient, Σ_j g_j ω̂(t_j)
 /// Q̂_j^(−i/2−1) (P − Γ(t_j)) (FarSegmentRule::front_).
@@ -69,7 +69,7 @@ struct NodeSums {
   double f = 0;
   std::array<double, 3> g{};
 };
-}  // namespace far_rule
+}  // namespace detail::far_rule
 
 /// The bounds of one bin of S for the even rules n = 2, 4, …, max_nodes (at
 /// index n/2 − 1; the rules run two nodes at a time), for f and for ∇f
@@ -223,16 +223,16 @@ class FarSegmentRule {
   /// longest of the kind), looked up once for a group of segments that
   /// take the same n (Skeleton's tolerance mode evaluates them so).
   struct NodeRule {
-    far_rule::NodeSums (*sum)(const far_rule::Rule&, const Vec3& pa, const Vec3& ab,
+    detail::far_rule::NodeSums (*sum)(const detail::far_rule::Rule&, const Vec3& pa, const Vec3& ab,
                               const Integrand& integrand) = nullptr;
-    const far_rule::Rule* nodes = nullptr;
+    const detail::far_rule::Rule* nodes = nullptr;
   };
   static NodeRule node_rule(bool scalis, int degree, int n, bool gradient);
   NodeRule node_rule(int n, bool gradient) const { return node_rule(integrand_.scalis, degree_, n, gradient); }
   /// evaluate_nodes with the n-node sum looked up already (node_rule of
   /// this rule's kind and degree).
   bool evaluate_with(const NodeRule& rule, const Vec3& p, bool gradient, FieldSample& out) const {
-    const far_rule::NodeSums sums = rule.sum(*rule.nodes, p - a_, ab_, integrand_);
+    const detail::far_rule::NodeSums sums = rule.sum(*rule.nodes, p - a_, ab_, integrand_);
     const double f = front_ * sums.f;
     if (!(f >= std::numeric_limits<double>::min() && f < std::numeric_limits<double>::infinity())) return false;
     out.value = f;
