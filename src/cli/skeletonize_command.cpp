@@ -179,10 +179,9 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                     "that hollows a thick part out; better on some shapes, worse on others: "
                     "docs/reconstruction_medial.md, \"Inside points\")");
   command->add_option("--medial-newton-steps", options.medial.fit.newton_steps,
-                      "Newton steps along the gradient for each fit point's distance to the result (default 0, at most "
-                      "3): 1 measures sharp edges and corners truly and lowered the RMS distance on 16 of 18 real shapes "
-                      "(the rotor 0.447% -> 0.373%), but slows the fit's convergence (a coarse sphere 0.270% -> 0.447%): "
-                      "docs/reconstruction_medial.md, \"One Newton step in both stages\"")
+                      "Newton steps along the gradient for each fit point's distance to the result, after a first-order "
+                      "start (default 1, at most 3; 0: first-order distances only): 1 measures sharp edges and corners "
+                      "truly (docs/reconstruction_medial.md, \"One Newton step in both stages\")")
       ->check(CLI::Range(0, 3));
   command->add_flag("--medial-thin-walls,!--no-medial-thin-walls", options.medial.thin_walls,
                     "The medial path samples the input again, up to 2.5 times finer, where a part of it is a thin wall "
