@@ -133,13 +133,17 @@ std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh
   text += "]";
   if (options.method != reconstruct::SkeletonMethod::curve) {
     // The medial path's own graph and its fit, round by round (absolute
-    // distances: the RMS of the first stage (the inside points' cavities
-    // included), the L^p mean of the second;
+    // distances: the RMS of the first stage's first-order start and of the
+    // first stage (the inside points' cavities included), the L^p mean of
+    // the second;
     // reconstruct/medial_fit.hpp).
     const reconstruct::MedialPathReport& m = r.medial_path;
     text += fmt::format(",\n \"medial_path\": {{\"samples\": {}, \"medial_vertices\": {}, \"pruned_vertices\": {}, "
-                        "\"spheres\": {}, \"fit_rms\": [",
+                        "\"spheres\": {}, \"fit_first_order\": [",
                         m.samples, m.vertices, m.pruned, m.spheres);
+    for (std::size_t k = 0; k < m.fit.first_order.size(); ++k)
+      text += fmt::format("{}{:.6g}", k == 0 ? "" : ", ", m.fit.first_order[k]);
+    text += "], \"fit_rms\": [";
     for (std::size_t k = 0; k < m.fit.rms.size(); ++k) text += fmt::format("{}{:.6g}", k == 0 ? "" : ", ", m.fit.rms[k]);
     text += "], \"fit_worst\": [";
     for (std::size_t k = 0; k < m.fit.worst.size(); ++k)
