@@ -392,6 +392,49 @@ MedialField written_field(const ReconstructOptions& o) {
   };
 }
 
+// The stall rule on hand-made objectives, 1% a round over 2 rounds: the
+// bound is 0.99² = 0.9801 × the value two rounds before.
+TEST(MedialFit, StalledMeansLessThanTheFallARoundOverTheLastRounds) {
+  EXPECT_TRUE(fit_stalled({1.0, 0.99, 0.981}, 0.01, 2));
+  EXPECT_FALSE(fit_stalled({1.0, 0.99, 0.98}, 0.01, 2));
+  // A last round that barely moved after one that fell by half: the two
+  // together fell far more than 2%.
+  EXPECT_FALSE(fit_stalled({1.0, 0.5, 0.4999}, 0.01, 2));
+  EXPECT_TRUE(fit_stalled({1.0, 0.5, 0.4999}, 0.01, 1));
+  // Only the last stall_rounds rounds count.
+  EXPECT_TRUE(fit_stalled({1.0, 0.2, 0.199, 0.198}, 0.01, 2));
+  EXPECT_FALSE(fit_stalled({1.0, 0.9999}, 0.01, 2)) << "fewer rounds than stall_rounds";
+  EXPECT_FALSE(fit_stalled({1.0, 1.0, 1.0}, 0.0, 2)) << "no stall rule";
+}
+
+// The plate's fit under the default options (one Newton step, started on
+// first-order distances): each phase of the first stage runs while its
+// objective falls by 1% a round or more over two rounds and stops at the
+// first round where it does not, before its cap; the Newton phase starts
+// where the first-order one stopped.
+TEST(MedialFit, TheFirstStageRunsUntilItStalls) {
+  TriangleMesh plate = read_mesh(std::filesystem::path(SKELCONV_TEST_DATA) / "reconstruct" / "cube.ply");
+  for (Vec3& v : plate.vertices) v.z() *= 0.2;
+  ReconstructOptions o;
+  o.method = SkeletonMethod::medial;
+  ASSERT_EQ(o.medial.fit.newton_steps, 1);
+  ASSERT_TRUE(o.medial.fit.first_order_start);
+  ASSERT_EQ(o.medial.fit.stall_fall, 0.01);
+  ASSERT_EQ(o.medial.fit.stall_rounds, 2);
+  const MedialFitOptions& fit = o.medial.fit;
+  const MedialFitReport report = reconstruct(plate, o).medial_path.fit;
+  ASSERT_FALSE(report.first_order.empty()) << "no first-order start";
+  ASSERT_FALSE(report.rms.empty());
+  for (const auto& [values, cap] : {std::pair{report.first_order, fit.first_order_rounds}, {report.rms, fit.rounds}}) {
+    for (std::size_t k = 1; k < values.size(); ++k) {
+      const std::vector<double> upto(values.begin(), values.begin() + std::ptrdiff_t(k));
+      EXPECT_FALSE(fit_stalled(upto, 0.01, 2)) << "went on after round " << k - 1 << " of a stalled stage";
+    }
+    EXPECT_LT(values.size() - 1, std::size_t(cap)) << "the stage ran to its cap";
+    EXPECT_TRUE(fit_stalled(values, 0.01, 2)) << "the stage stopped before it stalled";
+  }
+}
+
 // A ball of radius 1 (an isolated sphere: a compact point primitive,
 // f = w (1 − r²/R²)², R = 1.5, w = (1 − 1/1.5²)⁻² = 3.24, f(1) = 1) and
 // points 0.5 from its centre, 0.5 inside its surface. There f = 2.56 and

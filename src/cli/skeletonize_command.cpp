@@ -133,13 +133,17 @@ std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh
   text += "]";
   if (options.method != reconstruct::SkeletonMethod::curve) {
     // The medial path's own graph and its fit, round by round (absolute
-    // distances: the RMS of the first stage (the inside points' cavities
-    // included), the L^p mean of the second;
+    // distances: the RMS of the first stage's first-order start and of the
+    // first stage (the inside points' cavities included), the L^p mean of
+    // the second;
     // reconstruct/medial_fit.hpp).
     const reconstruct::MedialPathReport& m = r.medial_path;
     text += fmt::format(",\n \"medial_path\": {{\"samples\": {}, \"medial_vertices\": {}, \"pruned_vertices\": {}, "
-                        "\"spheres\": {}, \"fit_rms\": [",
+                        "\"spheres\": {}, \"fit_first_order\": [",
                         m.samples, m.vertices, m.pruned, m.spheres);
+    for (std::size_t k = 0; k < m.fit.first_order.size(); ++k)
+      text += fmt::format("{}{:.6g}", k == 0 ? "" : ", ", m.fit.first_order[k]);
+    text += "], \"fit_rms\": [";
     for (std::size_t k = 0; k < m.fit.rms.size(); ++k) text += fmt::format("{}{:.6g}", k == 0 ? "" : ", ", m.fit.rms[k]);
     text += "], \"fit_worst\": [";
     for (std::size_t k = 0; k < m.fit.worst.size(); ++k)
@@ -179,10 +183,9 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                     "that hollows a thick part out; better on some shapes, worse on others: "
                     "docs/reconstruction_medial.md, \"Inside points\")");
   command->add_option("--medial-newton-steps", options.medial.fit.newton_steps,
-                      "Newton steps along the gradient for each fit point's distance to the result (default 0, at most "
-                      "3): 1 measures sharp edges and corners truly and lowered the RMS distance on 16 of 18 real shapes "
-                      "(the rotor 0.447% -> 0.373%), but slows the fit's convergence (a coarse sphere 0.270% -> 0.447%): "
-                      "docs/reconstruction_medial.md, \"One Newton step in both stages\"")
+                      "Newton steps along the gradient for each fit point's distance to the result, after a first-order "
+                      "start (default 1, at most 3; 0: first-order distances only): 1 measures sharp edges and corners "
+                      "truly (docs/reconstruction_medial.md, \"One Newton step in both stages\")")
       ->check(CLI::Range(0, 3));
   command->add_flag("--medial-thin-walls,!--no-medial-thin-walls", options.medial.thin_walls,
                     "The medial path samples the input again, up to 2.5 times finer, where a part of it is a thin wall "

@@ -336,7 +336,8 @@ double power_mean(const std::vector<WeightedPoint>& points, const Evaluation& e,
 /// (`weights` of the current evaluation) and keeps a step only if it lowers
 /// `objective` without raising the RMS distance above `rms_limit`, so the
 /// stage never ends worse than it started, whatever the weights made of the
-/// step. It stops after `rounds` or when no step is kept.
+/// step. It stops after `rounds`, when no step is kept, or when it has
+/// stalled (fit_stalled).
 struct Rounds {
   std::string name;  ///< in the progress lines
   int rounds = 0;
@@ -345,6 +346,9 @@ struct Rounds {
   double rms_limit = std::numeric_limits<double>::infinity();
   /// The Newton steps each point's distance takes in this stage.
   int newton_steps = 0;
+  /// MedialFitOptions::stall_fall and stall_rounds (0: no stall rule).
+  double stall_fall = 0.0;
+  int stall_rounds = 1;
 };
 
 /// A step must also leave the topology error (`error`, when set) at most
@@ -402,10 +406,22 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
       progress(fmt::format("medial fit, {}, round {} of {}: {:.4g} (RMS distance {:.4g}, largest {:.4g}), "
                            "damping {:.2g}",
                            stage.name, round, stage.rounds, value, now.rms, now.largest, lambda));
+    if (fit_stalled(values, stage.stall_fall, stage.stall_rounds)) {
+      if (progress)
+        progress(fmt::format("medial fit, {}: fell by less than {:g}% a round over {} rounds; stopped", stage.name,
+                             100.0 * stage.stall_fall, stage.stall_rounds));
+      break;
+    }
   }
 }
 
 }  // namespace
+
+bool fit_stalled(const std::vector<double>& values, double stall_fall, int stall_rounds) {
+  if (!(stall_fall > 0.0) || stall_rounds < 1 || values.size() <= std::size_t(stall_rounds)) return false;
+  const double before = values[values.size() - 1 - std::size_t(stall_rounds)];
+  return values.back() > std::pow(1.0 - stall_fall, stall_rounds) * before;
+}
 
 MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& surface_points,
                            const std::vector<Vec3>& inside_points, const MedialField& field_of,
@@ -436,20 +452,32 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
   const std::vector<Vec4> start = mesh.spheres;
   for (Vec4& sphere : mesh.spheres) sphere.w() = std::max(sphere.w(), o.min_radius);
   limit_radius_slope(mesh, o.max_radius_slope, clearance);
-  Evaluation now = evaluate(mesh, points, field_of, o.newton_steps);
-  if (progress)
-    progress(fmt::format("medial fit: RMS distance {:.4g}, largest {:.4g} before fitting ({} points on the surface, "
-                         "{} inside)",
-                         now.rms, now.largest, points.surface, inside_points.size()));
-  // λ starts small (nearly Gauss–Newton) and grows tenfold while a step
-  // raises the objective, shrinks after a step that lowers it.
-  double lambda = o.initial_damping;
+  // The stages in order, each with where its objective goes and its cap
+  // (the first stage's rounds: its first-order start's and its Newton
+  // phase's together).
+  struct Planned {
+    Rounds stage;
+    std::vector<double>* values;
+    int cap;
+  };
+  std::vector<Planned> plan;
+  const double huber = o.huber_scale * diagonal_of(surface_points);
   Rounds least_squares;
   least_squares.name = "RMS distance (Huber)";
-  const double huber = o.huber_scale * diagonal_of(surface_points);
   least_squares.weights = [huber](const Evaluation&) { return huber_weights(huber); };
   least_squares.objective = [](const Evaluation& e) { return e.objective; };
+  least_squares.stall_fall = o.stall_fall, least_squares.stall_rounds = o.stall_rounds;
+  if (o.first_order_start && o.newton_steps > 0) {
+    // First-order distances while the reconstruction is far off, then the
+    // Newton steps from where that stalled (MedialFitOptions::first_order_start).
+    Rounds first_order = least_squares;
+    first_order.name = "RMS distance (Huber), first-order";
+    first_order.newton_steps = 0;
+    plan.push_back({first_order, &r.first_order, std::min(o.first_order_rounds, o.rounds)});
+  }
   least_squares.newton_steps = o.newton_steps;
+  plan.push_back({least_squares, &r.rms, o.rounds});
+  const std::size_t first_stage = plan.size();  // the first stage's phases come before
   // Then the worst points: the least squares leave a few places (a crease
   // the blend fills, a rim it rounds) far off while the RMS is low, and
   // those make the Hausdorff distance.
@@ -464,30 +492,48 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
   // filled), where the first-order distance falls short most: the second
   // stage measures them with more Newton steps.
   worst.newton_steps = std::max(o.newton_steps, o.worst_newton_steps);
+  plan.push_back({worst, &r.worst, o.worst_rounds});
+
+  Evaluation now = evaluate(mesh, points, field_of, plan.front().stage.newton_steps);
+  if (progress)
+    progress(fmt::format("medial fit: RMS distance {:.4g}, largest {:.4g} before fitting ({} points on the surface, "
+                         "{} inside)",
+                         now.rms, now.largest, points.surface, inside_points.size()));
+  // λ starts small (nearly Gauss–Newton) and grows tenfold while a step
+  // raises the objective, shrinks after a step that lowers it.
+  double lambda = o.initial_damping;
   const auto evaluate_for = [&](const Rounds& stage) {
     if (now.newton_steps != stage.newton_steps) now = evaluate(mesh, points, field_of, stage.newton_steps);
   };
   std::vector<std::vector<Vec4>> history{mesh.spheres};  // before the fit, then after each round taken
   double first_stage_rms = 0.0;
-  const auto run_stages = [&](int first_rounds, int worst_rounds, Guard& guard) {
-    if (first_rounds > 0 || r.rms.empty()) {  // the objective before the fit, rounds or not
-      least_squares.rounds = first_rounds;
-      evaluate_for(least_squares);
-      run_rounds(mesh, now, lambda, points, field_of, o, start, least_squares, r.rms, history, guard, clearance,
+  // Runs the stages from stage `from` on, the rounds of stage `from` it
+  // kept (`kept`) counted against its cap: a first-stage phase records its
+  // objective before any round even with no round left (the report's first
+  // value); the second stage is skipped without rounds, and its RMS limit
+  // is where the first stage ended (when resumed within the second stage:
+  // where it ended before).
+  const auto run_stages = [&](std::size_t from, int kept, Guard& guard) {
+    for (std::size_t i = from; i < plan.size(); ++i) {
+      Planned& step = plan[i];
+      const bool first = i < first_stage;
+      int left = step.cap - (i == from ? kept : 0);
+      if (first && i > 0) left -= int(plan[0].values->size()) - 1;  // the first-order start's rounds
+      if (!first && left <= 0) continue;
+      step.stage.rounds = std::max(left, 0);
+      evaluate_for(step.stage);
+      if (!first) step.stage.rms_limit = (1.0 + o.worst_rms_growth) * first_stage_rms;
+      run_rounds(mesh, now, lambda, points, field_of, o, start, step.stage, *step.values, history, guard, clearance,
                  progress);
-      // The second stage's RMS limit is on its own distances.
-      if (worst_rounds > 0) evaluate_for(worst);
-      first_stage_rms = now.rms;
-    }
-    if (worst_rounds > 0) {
-      worst.rounds = worst_rounds;
-      evaluate_for(worst);
-      worst.rms_limit = (1.0 + o.worst_rms_growth) * first_stage_rms;
-      run_rounds(mesh, now, lambda, points, field_of, o, start, worst, r.worst, history, guard, clearance, progress);
+      if (i + 1 == first_stage && o.worst_rounds > 0) {
+        // The second stage's RMS limit is on its own distances.
+        evaluate_for(plan.back().stage);
+        first_stage_rms = now.rms;
+      }
     }
   };
   Guard unguarded;
-  run_stages(o.rounds, o.worst_rounds, unguarded);
+  run_stages(0, 0, unguarded);
   // The points see distances, not topology: a round may pinch a neck, fuse
   // two parts that nearly touch or open a hole through a thin sheet. Where
   // the fitted spheres end farther from the input's topology than the
@@ -524,23 +570,26 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
         (topology_error(at_round(middle)) <= allowed ? kept : lost) = middle;
       }
       mesh = at_round(kept);
-      now = evaluate(mesh, points, field_of, o.newton_steps);
       r.rounds_kept = kept;
+      // The stage round `kept` belongs to and the rounds of it kept (the
+      // end of a stage is the start of the next one taken); its values and
+      // the later stages' go back to there.
+      std::size_t stage = 0, in_stage = kept;
+      while (stage + 1 < plan.size() && !plan[stage + 1].values->empty()) {
+        const std::size_t taken = plan[stage].values->empty() ? 0 : plan[stage].values->size() - 1;
+        if (in_stage < taken) break;
+        in_stage -= taken, ++stage;
+      }
+      if (!plan[stage].values->empty()) plan[stage].values->resize(in_stage + 1);
+      for (std::size_t i = stage + 1; i < plan.size(); ++i) plan[i].values->clear();
+      now = evaluate(mesh, points, field_of, plan[stage].stage.newton_steps);
       if (progress)
         progress(fmt::format("medial fit: round {} of {} takes the topology farther from the input's than round "
                              "{}; resumed after round {} (RMS distance {:.4g}) with each step tested",
                              lost, history.size() - 1, kept, kept, now.rms));
-      // The rounds taken of each stage up to `kept`.
-      const std::size_t first_taken = r.rms.size() - 1;
       Guard guard{topology_error, allowed, o.topology_checks};
       lambda = o.initial_damping;
-      if (kept <= first_taken) {
-        r.rms.resize(kept + 1), r.worst.clear();
-        run_stages(o.rounds - int(kept), o.worst_rounds, guard);
-      } else {
-        r.worst.resize(kept - first_taken + 1);
-        run_stages(0, o.worst_rounds - int(kept - first_taken), guard);
-      }
+      run_stages(stage, int(in_stage), guard);
     }
   }
   if (report != nullptr) *report = r;

@@ -54,10 +54,41 @@
 namespace skelconv::reconstruct {
 
 struct MedialFitOptions {
-  /// Rounds at most of the first stage. The RMS distance still falls by
-  /// ~10% a round after 8 on the hand; 14 rounds take the elephant from
-  /// 1.66% to 1.40% (Hausdorff).
-  int rounds = 14;
+  /// Rounds at most of the first stage, its first-order start's
+  /// (first_order_start) and its Newton rounds' together (a cap: each stops
+  /// before it when its objective has stalled, stall_fall below). With first-order
+  /// distances the objective stalls within 14 rounds on the real shapes
+  /// (the hand's RMS distance still fell ~10% a round after 8; 14 rounds
+  /// took the elephant from 1.66% to 1.40%, Hausdorff); with a Newton step
+  /// (newton_steps) it falls more slowly (a coarse sphere's 0.115 → 0.018
+  /// of the diagonal in 14 rounds, still falling), so the cap is higher.
+  int rounds = 40;
+  /// A stage of the fit stops when its objective fell by less than this
+  /// fraction a round, on average over its last stall_rounds rounds: the
+  /// fit has stalled, and a round is one more evaluation of the skeleton's
+  /// field at every point and a sparse solve. Over several rounds, not one:
+  /// the damping alternates (a round that needed a larger λ takes a
+  /// shorter step and falls less, the next one more). 1% a round: a round
+  /// that moves the RMS distance by 1% moves the measured RMS by less than
+  /// its run-to-run scatter on the real shapes (0.27 vs 0.28% of the
+  /// diagonal on the coarse sphere). 0: a stage runs to its cap, or until
+  /// no step is kept.
+  double stall_fall = 0.01;
+  int stall_rounds = 2;
+  /// Rounds at most of the first-order start (first_order_start), within
+  /// `rounds`.
+  int first_order_rounds = 14;
+  /// With newton_steps > 0, the first stage starts on first-order distances
+  /// and takes the Newton steps only once that has stalled. From the
+  /// medial balls the reconstruction is far from the input (0.1 of the
+  /// diagonal on the coarse sphere), where the Newton distance's foot, the
+  /// point its row is taken at, moves with every sphere the step moves:
+  /// the linear model is poor and the damping climbs (λ 3.3 in the coarse
+  /// sphere's second round, 7% gained in its first, where the first-order
+  /// fit gains 17% and 79% in its first two). Near the surface the two
+  /// distances differ only where the Newton step matters (sharp edges,
+  /// saturated creases), and the Newton stage converges from there.
+  bool first_order_start = true;
   /// The Levenberg–Marquardt damping λ of the first round (relative to the
   /// diagonal of JᵀWJ), and how many times a round may multiply it by 10
   /// before it gives up (the step then barely moves: the fit has stopped).
@@ -85,16 +116,16 @@ struct MedialFitOptions {
   /// 91% at a cube's corner
   /// (`MedialFit.TheFirstStageMeasuresSharpCornersWithANewtonStep`). With
   /// 1 the least squares weigh each point by about its true distance, which
-  /// the measure's RMS is: it fell on 16 of 18 real shapes (CGAL's rotor
-  /// 0.447% → 0.373%, the coupling 0.457% → 0.409%; the elk's and the cow's
-  /// rose; docs/reconstruction_medial.md, "One Newton step in both
-  /// stages"). 0 by default all the same: the fit converges more slowly
-  /// from the more honest start, and a coarse sphere (80 triangles) through
-  /// the medial path ends at RMS 0.447% instead of 0.270%, over the 0.4%
-  /// goal (`cli.skeletonize.inside_out_repair`). 2 steps, on earlier code,
-  /// opened a tunnel in homer (χ 2 → 0). Each step is one more field
-  /// evaluation a point.
-  int newton_steps = 0;
+  /// the measure's RMS is. From the medial balls, far from the input, the
+  /// Newton distance's linear model is poor (a coarse sphere's fit stalled
+  /// at 0.509% RMS, `cli.skeletonize.inside_out_repair`'s goal 0.4%): the
+  /// first stage starts on first-order distances (first_order_start) and
+  /// takes the step once that has stalled, which lowered the RMS distance
+  /// on the coarse sphere (0.278% → 0.258%) and on most real shapes
+  /// (docs/reconstruction_medial.md, "One Newton step in both stages").
+  /// 2 steps, on earlier code, opened a tunnel in homer (χ 2 → 0). Each
+  /// step is one more field evaluation a point.
+  int newton_steps = 1;
   /// The Newton steps after the first of the second stage (at least
   /// newton_steps, which counts in both stages): its points are the worst,
   /// where the field saturates most. 1: on eighteen real shapes it lowered
@@ -110,7 +141,9 @@ struct MedialFitOptions {
   /// more it counts, so the few places that make the Hausdorff distance
   /// lead. 0: no second stage.
   /// p = 4 and 6 rounds: measured against p = 6 and 10 rounds
-  /// (docs/reconstruction_medial.md, "The fit").
+  /// (docs/reconstruction_medial.md, "The fit"). The stage takes them all
+  /// unless no step is kept (no stall rule): its objective is the few worst
+  /// points', which may fall little for a round and much at the next.
   int worst_rounds = 6;
   double worst_exponent = 4.0;
   /// The second stage keeps no step that raises the RMS distance above
@@ -124,8 +157,12 @@ struct MedialFitOptions {
 };
 
 struct MedialFitReport {
-  /// The weighted RMS of δ before the fit and after each round of the first
-  /// stage (absolute; decreasing).
+  /// With first_order_start and newton_steps > 0: the weighted RMS of the
+  /// first-order δ before the fit and after each round of the first-order
+  /// start (absolute; decreasing); empty otherwise.
+  std::vector<double> first_order;
+  /// The weighted RMS of δ (with newton_steps Newton steps) before the first
+  /// stage and after each of its rounds (absolute; decreasing).
   std::vector<double> rms;
   /// The L^p mean of δ before the second stage and after each of its rounds
   /// (absolute; decreasing; empty without a second stage).
@@ -134,6 +171,14 @@ struct MedialFitReport {
   /// many rounds (of both stages) it kept.
   std::optional<std::size_t> rounds_kept;
 };
+
+/// Whether a stage of the fit whose objective went through `values` (before
+/// its first round, then after each round) has stalled: over its last
+/// `stall_rounds` rounds it fell by less than `stall_fall` a round on
+/// average, i.e. its last value is above (1 − stall_fall)^stall_rounds × the
+/// value stall_rounds rounds before (MedialFitOptions::stall_fall). Never
+/// with stall_fall ≤ 0 or fewer rounds than stall_rounds.
+bool fit_stalled(const std::vector<double>& values, double stall_fall, int stall_rounds);
 
 /// The field of a medial mesh.
 using MedialField = std::function<Skeleton(const MedialMesh&)>;
