@@ -251,6 +251,52 @@ TEST(SupportBox, EveryFiniteSupportFamilyOnSegmentsAndPolygons) {
   EXPECT_FALSE(support_box(Primitive(gaussian)).has_value());
 }
 
+// The box's corners lie up to √3 ρ from the skeleton: the ball about the
+// centroid cuts them off, and wherever the primitive is not exactly 0 the
+// ball holds the point (random points over the box, on a compact SCALIS
+// triangle, segment and point, the medial path's primitives).
+TEST(SupportBox, BallCutsOffTheBoxCornersNeverTheSupport) {
+  const ScalisKernel kernel = ScalisKernel::compact(4, 1.5);
+  const double tau = 0.2, rho = 1.5 * tau;  // ρ = σ τ
+  const ScalisTriangle triangle({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {tau, tau, tau}, kernel);
+  const ScalisSegment segment(Vec3(0, 0, 0), Vec3(1, 0.5, 0), tau, 0.5 * tau, kernel);
+  const PointPrimitive point(Vec3(0.5, 0.5, 0.5), KernelSpec::compact(4, rho), 0.7);
+  const std::optional<SupportBox> triangle_box = support_box(Primitive(triangle));
+  ASSERT_TRUE(triangle_box.has_value());
+  // A corner of the box, 1.1 from the triangle's hypotenuse: f = 0 there,
+  // and the ball leaves it out (the box alone holds it).
+  const Vec3 corner(1 + 0.99 * rho, 1 + 0.99 * rho, 0.99 * rho);
+  EXPECT_TRUE(corner.x() <= triangle_box->hi.x() && corner.y() <= triangle_box->hi.y() &&
+              corner.z() <= triangle_box->hi.z());
+  expect_zero_outside(triangle, *triangle_box, {corner});
+  // Points 0.99 ρ beyond a vertex, an edge and the face are inside.
+  EXPECT_TRUE(triangle_box->contains(Vec3(1 + 0.99 * rho, 0, 0)));
+  EXPECT_TRUE(triangle_box->contains(Vec3(0.5, 0.5, 0) + 0.99 * rho * Vec3(1, 1, 0).normalized()));
+  EXPECT_TRUE(triangle_box->contains(Vec3(0.2, 0.2, 0.99 * rho)));
+  const auto check = [](const auto& primitive) {
+    const std::optional<SupportBox> box = support_box(Primitive(primitive));
+    ASSERT_TRUE(box.has_value());
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    int cut = 0, nonzero = 0;
+    for (int n = 0; n < 4000; ++n) {
+      const Vec3 p = box->lo + (box->hi - box->lo).cwiseProduct(Vec3(u(rng), u(rng), u(rng)));
+      const FieldSample f = primitive.value_and_gradient(p);
+      const bool vanishes = f.value == 0.0 && f.gradient == Vec3::Zero();
+      if (!vanishes) {
+        ++nonzero;
+        EXPECT_TRUE(box->contains(p)) << p.transpose();
+      }
+      cut += !box->contains(p);
+    }
+    EXPECT_GT(nonzero, 100);
+    EXPECT_GT(cut, 100);  // the corners the ball cuts off
+  };
+  check(triangle);
+  check(segment);
+  check(point);
+}
+
 TEST(SkeletonBatch, SameBytesWhateverTheThreadCount) {
   const Skeleton skeleton = mixed_skeleton(60);
   const std::vector<Vec3> points = probe_points(skeleton, 700);

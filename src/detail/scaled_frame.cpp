@@ -145,6 +145,10 @@ double ScaledFrame::restore_value(double value, int power, bool may_vanish, cons
   const int shift = power * exponent_;
   double world;
   if (restore_value_common(value, normal_power_of_two_or_zero(shift), world)) return world;
+  // A compact support's 0 (most terms of a sum of compact primitives, at a
+  // point outside their supports) is next: ±0·2^shift is ±0, the answer
+  // restore_value_rare gives it, without forming the frame point for it.
+  if (value == 0.0 && may_vanish) return value;
   return restore_value_rare(value, shift, may_vanish, what, p, point(p));
 }
 
@@ -156,6 +160,8 @@ Vec3 ScaledFrame::restore_gradient(const Vec3& gradient, int power, bool may_van
   const int shift = power * exponent_;
   Vec3 world;
   if (restore_gradient_common(gradient, normal_power_of_two_or_zero(shift), world)) return world;
+  // As restore_value: each ±0 component times 2^shift is itself.
+  if (may_vanish && gradient.x() == 0.0 && gradient.y() == 0.0 && gradient.z() == 0.0) return gradient;
   return restore_gradient_rare(gradient, shift, may_vanish, what, p, point(p));
 }
 

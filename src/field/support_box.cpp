@@ -11,17 +11,30 @@
 namespace skelconv {
 namespace {
 
-/// The bounding box of `points` grown by ρ and support_margin.
+/// The bounding box of `points` grown by ρ and support_margin, and the ball
+/// about their centroid c grown as much: a point X outside it has
+/// |X − c| > reach + ρ + margin, reach = max |point − c|, so it is farther
+/// than ρ + margin from the points' convex hull (which lies within reach of
+/// c). The roundings of the squared distances and of the reach, a few
+/// 1e-16 of |X − c| and of the magnitude, are far below the margin's
+/// 1e-6 ρ + 1e-13 × magnitude.
 SupportBox grown_bounding_box(std::span<const Vec3> points, double rho) {
   SupportBox box{points[0], points[0]};
+  Vec3 sum = Vec3::Zero();
   for (const Vec3& p : points) {
     box.lo = box.lo.cwiseMin(p);
     box.hi = box.hi.cwiseMax(p);
+    sum += p;
   }
   const double magnitude = std::max(box.lo.cwiseAbs().maxCoeff(), box.hi.cwiseAbs().maxCoeff());
   const double grow = rho + support_margin(rho, magnitude);
   box.lo -= Vec3::Constant(grow);
   box.hi += Vec3::Constant(grow);
+  box.centre = sum / double(points.size());
+  double reach = 0.0;
+  for (const Vec3& p : points) reach = std::max(reach, (p - box.centre).norm());
+  const double radius = reach + grow;
+  box.radius2 = radius * radius;
   return box;
 }
 

@@ -72,6 +72,7 @@ ScalisTriangle::ScalisTriangle(const std::array<Vec3, 3>& vertices, const std::a
   detail::require_positive_parameter(iso, "iso");
   require_supported_degree(kernel);
   normalisation_ = normalisation(kernel.family, kernel.degree, kernel.sigma);
+  may_vanish_ = kernels::family_facts(kernel.family).finite_support;  // outside its support
 
   // The triangle's frame (skelconv/detail/scaled_frame.hpp): coordinates and radii
   // scaled by the power of two that brings the diameter into [1, 2);
@@ -171,10 +172,9 @@ FieldSample ScalisTriangle::restore(double F, const Vec3* grad, const Vec3& p) c
   // f = iso·F/h is scale invariant, ∇f has units length^−1 (scaled_frame.hpp).
   const char* what = uses_closed_form() ? "the constant-radius SCALIS triangle" : "the SCALIS triangle";
   const double scale = iso_ / normalisation_;
-  const bool may_vanish = kernels::family_facts(kernel_.family).finite_support;  // outside its support
   FieldSample sample;
-  sample.value = frame_.restore_value(scale * F, 0, may_vanish, what, p);
-  if (grad != nullptr) sample.gradient = frame_.restore_gradient(scale * *grad, -1, may_vanish, what, p);
+  sample.value = frame_.restore_value(scale * F, 0, may_vanish_, what, p);
+  if (grad != nullptr) sample.gradient = frame_.restore_gradient(scale * *grad, -1, may_vanish_, what, p);
   return sample;
 }
 

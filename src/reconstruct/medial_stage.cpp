@@ -41,6 +41,13 @@ struct CentreHash {
   }
 };
 
+/// Whether two medial meshes are the same skeleton: equal spheres (centres
+/// and radii) joined the same way.
+bool same(const MedialMesh& a, const MedialMesh& b) {
+  return a.spheres == b.spheres && a.edges == b.edges && a.triangles == b.triangles && a.isolated == b.isolated &&
+         a.parts == b.parts;
+}
+
 std::size_t primitives(const MedialMesh& mesh) {
   return mesh.edges.size() + mesh.triangles.size() + mesh.isolated.size();
 }
@@ -328,17 +335,29 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // The guard needs the topology alone: it meshes without projecting the
   // vertices (mesh_stage_unprojected, the same triangles), about a sixth
   // of a meshing's work less. Each surface it meshes is kept with its
-  // spheres (a few megabytes each, at most 2 + log2(rounds) +
+  // medial mesh (a few megabytes each, at most 2 + log2(rounds) +
   // topology_checks of them):
   // where the guard ran, the fit's result is one of them, projected once
   // at the end (project_stage_mesh: mesh_stage's mesh to the bit), and
   // measuring the result (`auto`, the report) then meshes nothing again.
-  std::vector<std::pair<std::vector<Vec4>, TriangleMesh>> meshed;
+  //
+  // The same medial mesh may be asked twice (the fit's bisection over its
+  // rounds starts at the middle round, which it has tested just before
+  // when the unfitted spheres were no better): the surface kept for it is
+  // taken again, moved to the back as a new one would be, and nothing is
+  // meshed (the mesh, and so its topology, is a function of the skeleton).
+  std::vector<std::pair<MedialMesh, TriangleMesh>> meshed;
   const TopologyError topology_error = [&](const MedialMesh& medial) {
-    Stage s;
-    s.name = "medial";
-    s.medial = medial;
-    meshed.emplace_back(medial.spheres, mesh_stage_unprojected(surface, s, o));
+    const auto known =
+        std::find_if(meshed.begin(), meshed.end(), [&medial](const auto& entry) { return same(entry.first, medial); });
+    if (known != meshed.end()) {
+      std::rotate(known, known + 1, meshed.end());
+    } else {
+      Stage s;
+      s.name = "medial";
+      s.medial = medial;
+      meshed.emplace_back(medial, mesh_stage_unprojected(surface, s, o));
+    }
     const MeshTopology t = mesh_topology(meshed.back().second);
     return topology_defects(input_topology, t);
   };
@@ -368,8 +387,8 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     if (!start.spheres.empty())
       s.medial = fit_medial_mesh(start, points, inside, field_of, fit, fit_report, o.progress, guard, clearance,
                                  point_parts);
-    for (auto& [spheres, surface_mesh] : meshed)
-      if (spheres == s.medial.spheres) s.meshed = std::move(surface_mesh);
+    for (auto& [medial, surface_mesh] : meshed)
+      if (same(medial, s.medial)) s.meshed = std::move(surface_mesh);
     meshed.clear();
     return s;
   };

@@ -9,7 +9,15 @@
 // its support radius ρ plus a margin (support_margin below), so every point
 // outside it is farther than ρ (1 + 1e-6) from the skeleton: far beyond the
 // rounding of the primitives' own support tests.
+//
+// The box is also cut by a ball about the geometry's centroid (radius: the
+// farthest vertex plus ρ and the same margin), under the same contract: a
+// box's corners lie up to √3 ρ from the skeleton, and a point there costs a
+// whole evaluation (the frame, the support test) only to return 0; the ball
+// answers for it with one squared distance.
 #pragma once
+
+#include <limits>
 
 #include <optional>
 
@@ -20,9 +28,12 @@ namespace skelconv {
 
 struct SupportBox {
   Vec3 lo, hi;
+  /// The ball |P − centre|² ≤ radius2 (the default: every point).
+  Vec3 centre = Vec3::Zero();
+  double radius2 = std::numeric_limits<double>::infinity();
   bool contains(const Vec3& p) const {
     return p.x() >= lo.x() && p.x() <= hi.x() && p.y() >= lo.y() && p.y() <= hi.y() && p.z() >= lo.z() &&
-           p.z() <= hi.z();
+           p.z() <= hi.z() && (p - centre).squaredNorm() <= radius2;
   }
 };
 

@@ -170,6 +170,9 @@ class ScalisTriangle {
   ScalisKernel kernel_;
   double iso_ = 1.0;
   double normalisation_ = 1.0;
+  /// Whether f may be 0 (a finite support), read from the family's facts
+  /// once: restore() runs at every evaluation.
+  bool may_vanish_ = false;
   /// The triangle's frame (skelconv/detail/scaled_frame.hpp: the diameter scaled
   /// into [1, 2)), and the vertices and radii in it.
   ScaledFrame frame_;
