@@ -90,6 +90,14 @@ void add_ball(MedialGraph& graph, const Vec3& centre, double radius) {
   graph.vertices.push_back({centre, radius, {first, first + 1, first + 2, first + 3}});
 }
 
+/// The large piece of the islands tests: `count` balls of radius 1 along x,
+/// `step` apart from the origin, each joined to the next.
+void add_chain(MedialGraph& graph, int count, double step) {
+  const auto first = std::int32_t(graph.vertices.size());
+  for (int i = 0; i < count; ++i) add_ball(graph, Vec3(step * i, 0, 0), 1.0);
+  for (std::int32_t i = 0; i + 1 < count; ++i) graph.edges.push_back({first + i, first + i + 1, {0, 1, 2}});
+}
+
 // The islands rule and its lobes: a chain of 40 balls of radius 1 along x
 // (centres (i, 0, 0), each touching a diameter, θ = π) is the large piece;
 // three single vertices are islands (1 < 5% of 40). A ball of radius 2 at
@@ -102,8 +110,7 @@ void add_ball(MedialGraph& graph, const Vec3& centre, double radius) {
 TEST(Pruning, SmallPiecesKeptAsLobes) {
   MedialGraph graph;
   const auto add = [&graph](const Vec3& centre, double radius) { add_ball(graph, centre, radius); };
-  for (int i = 0; i < 40; ++i) add(Vec3(i, 0, 0), 1.0);
-  for (std::int32_t i = 0; i + 1 < 40; ++i) graph.edges.push_back({i, i + 1, {0, 1, 2}});
+  add_chain(graph, 40, 1.0);
   add(Vec3(45, 0, 0), 2.0);
   add(Vec3(20, 0.2, 0), 1.0);
   add(Vec3(60, 0, 0), 0.2);
@@ -138,8 +145,7 @@ TEST(Pruning, SmallPiecesKeptAsLobes) {
 TEST(Pruning, SmallPiecesKeptAsThinProtrusions) {
   MedialGraph graph;
   const auto add = [&graph](const Vec3& centre, double radius) { add_ball(graph, centre, radius); };
-  for (int i = 0; i < 100; ++i) add(Vec3(0.4 * i, 0, 0), 1.0);
-  for (std::int32_t i = 0; i + 1 < 100; ++i) graph.edges.push_back({i, i + 1, {0, 1, 2}});
+  add_chain(graph, 100, 0.4);
   for (const double y : {1.3, 1.5, 1.7}) add(Vec3(20, y, 0), 0.1);
   graph.edges.push_back({100, 101, {0, 1, 2}});
   graph.edges.push_back({101, 102, {0, 1, 2}});
