@@ -414,11 +414,12 @@ TEST(MedialFit, StalledMeansLessThanTheFallARoundOverTheLastRounds) {
 // sum of two SCALIS triangles rounds the plate's edges and corners, so its
 // distance has a floor, which the fit reaches within a few rounds and then
 // barely lowers (RMS 0.069 before, 0.023 after five first-order rounds,
-// 0.018 after two Newton rounds; with no stall rule each phase goes on to
-// its cap, lowering it by ~0.1% a round). Each phase of the first stage runs
-// while its objective falls by its stall fall a round or more over the
-// stall rounds and stops at the first round where it does not, before its
-// cap; the Newton phase starts where the first-order one stopped.
+// about 0.018 after the Newton rounds; with no stall rule each phase goes on
+// to its cap, lowering it by ~0.1% a round). Each phase of the first stage runs
+// while its objective falls by its stall fall (the first-order start's, then
+// the Newton phase's) a round or more over the stall rounds and stops at the
+// first round where it does not, before its cap; the Newton phase starts
+// where the first-order one stopped.
 TEST(MedialFit, TheFirstStageRunsUntilItStalls) {
   MedialMesh sheet;
   for (const double y : {-0.4, 0.4})
@@ -450,15 +451,17 @@ TEST(MedialFit, TheFirstStageRunsUntilItStalls) {
   const struct {
     const std::vector<double>& values;
     int cap;
-  } phases[] = {{report.first_order, fit.first_order_rounds}, {report.rms, fit.rounds}};
-  for (const auto& [values, cap] : phases) {
+    double stall_fall;
+  } phases[] = {{report.first_order, fit.first_order_rounds, fit.first_order_stall_fall},
+                {report.rms, fit.rounds, fit.stall_fall}};
+  for (const auto& [values, cap, stall_fall] : phases) {
     for (std::size_t k = 1; k < values.size(); ++k) {
       const std::vector<double> upto(values.begin(), values.begin() + std::ptrdiff_t(k));
-      EXPECT_FALSE(fit_stalled(upto, fit.stall_fall, fit.stall_rounds))
+      EXPECT_FALSE(fit_stalled(upto, stall_fall, fit.stall_rounds))
           << "went on after round " << k - 1 << " of a stalled stage";
     }
     EXPECT_LT(values.size() - 1, std::size_t(cap)) << "the stage ran to its cap";
-    EXPECT_TRUE(fit_stalled(values, fit.stall_fall, fit.stall_rounds)) << "the stage stopped before it stalled";
+    EXPECT_TRUE(fit_stalled(values, stall_fall, fit.stall_rounds)) << "the stage stopped before it stalled";
   }
 }
 
