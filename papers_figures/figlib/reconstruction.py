@@ -68,7 +68,7 @@ def draw_shape(ctx, figure, name, known, plane, mesh_args=(), noise=0.0):
         if noise > 0:
             args += ["--noise", str(noise)]
         full = not ctx.quick
-        summary = _run(args + (["--report", report] if full else []))
+        summary = _run(args + (["--report", report, "--report-stages", "all"] if full else []))
         recovered = _segments(out)
         known_segments = _segments(os.path.join(DATA, name + ".json"))
         samples, _, _ = read_ply(mesh)

@@ -201,14 +201,14 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                       "Also prune Voronoi vertices whose contact samples span less than this × the diagonal "
                       "(default 0; about 4 × the noise amplitude for noisy samples)");
   command->add_option("--epsilon", options.epsilon, "Pavlidis tolerance × skeleton size (default 0.02)");
-  command->add_option("--report", options.report_path, "Also mesh every stage and write its primitive counts, two-sided Hausdorff and RMS distances to the input, Euler characteristics and times (JSON)");
+  command->add_option("--report", options.report_path, "Also mesh the result (every stage with --report-stages all) and write each stage's primitive counts and times, and the meshed ones' two-sided Hausdorff and RMS distances to the input and Euler characteristics (JSON)");
   command->add_option("--report-image", options.report_image_path,
                       "Also write a picture (PNG): the input, the skeleton, and its meshed surface coloured by the "
                       "distance to the input, with the Hausdorff and RMS distances and the Euler characteristics");
   command->add_option_function<std::string>(
                "--report-stages", [&options](const std::string& which) { options.report_result_only = which == "result"; },
-               "all (default): mesh and measure every stage; result: the result stage only (the others keep their "
-               "counts and times)")
+               "result (default): mesh and measure the result stage only (the others keep their counts and times); "
+               "all: every stage (each a meshing: minutes on a large input)")
       ->check(CLI::IsMember({"all", "result"}));
   command->add_option("--measure-divisions", options.measure_divisions,
                       "--report and --method auto mesh the skeleton with facets of the diagonal / this (default 100)")

@@ -1,15 +1,15 @@
 // src/cli/skeletonize_command.hpp — `skelconv skeletonize INPUT.ply|.obj -o
 // SKELETON.json [--prune-angle deg] [--epsilon e] [--report REPORT.json
-// [--report-stages all|result]]`.
+// [--report-stages result|all]]`.
 //
 // Reads a closed mesh (mesh_reader.hpp), reconstructs its skeleton
 // (reconstruct/reconstruct.hpp: medial graph, pruning, branches, Pavlidis,
 // B-splines) and writes a skelconv skeleton file of SCALIS segments whose
 // surface f = iso approximates the input. Progress lines go to stderr (not
 // with --quiet); a summary (counts per stage, the result's primitives) to
-// stdout. --report also meshes every stage (or the result only) and writes
-// per stage the primitive counts, distances to the input, Euler
-// characteristic and times as JSON.
+// stdout. --report also meshes the result stage (or, with --report-stages
+// all, every stage) and writes per stage the primitive counts, times and,
+// where meshed, the distances to the input and Euler characteristic as JSON.
 // Errors: one "skelconv: error: ..." line, exit 2, nothing written.
 // The work grows with the input's size: a mesh of more than --max-triangles
 // triangles (or vertices) is refused while it is read, before any work.
@@ -31,7 +31,11 @@ struct SkeletonizeOptions {
   std::string output_path;
   std::optional<std::string> report_path;
   std::optional<std::string> report_image_path;  ///< --report-image: a PNG (report_image.hpp)
-  bool report_result_only = false;  ///< --report-stages result: mesh and measure the result stage only
+  /// --report-stages result (the default): mesh and measure the result stage
+  /// only; all: every stage too, each a meshing as long as the result's (a
+  /// curve stage of CGAL's joint.off took minutes where the whole medial path
+  /// took one), which only someone comparing the stages wants to wait for.
+  bool report_result_only = true;
   std::string method = "auto";  ///< --method: auto, curve or medial (ReconstructOptions::method)
   std::size_t budget = 500;     ///< --budget: the medial path's primitives (MedialOptions::budget)
   reconstruct::MedialOptions medial;  ///< --medial-*: the medial path's other options

@@ -363,7 +363,7 @@ struct Guard {
 /// Runs `stage` from `now` (and `mesh`, which it describes); the objective
 /// before (unless `values` holds it already) and after each round taken
 /// goes to `values`, the spheres after each round taken to `history`. λ
-/// carries over from one stage to the next.
+/// carries over from one stage to the next (unless the caller resets it).
 void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoints& points,
                 const MedialField& field_of, const MedialFitOptions& o, const std::vector<Vec4>& start,
                 const Rounds& stage, std::vector<double>& values, std::vector<std::vector<Vec4>>& history,
@@ -473,6 +473,7 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
     Rounds first_order = least_squares;
     first_order.name = "RMS distance (Huber), first-order";
     first_order.newton_steps = 0;
+    first_order.stall_fall = o.first_order_stall_fall;
     plan.push_back({first_order, &r.first_order, std::min(o.first_order_rounds, o.rounds)});
   }
   least_squares.newton_steps = o.newton_steps;
@@ -522,6 +523,10 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
       if (!first && left <= 0) continue;
       step.stage.rounds = std::max(left, 0);
       evaluate_for(step.stage);
+      // The Newton phase measures other distances than the first-order
+      // start whose λ climbed while it stalled
+      // (MedialFitOptions::newton_phase_fresh_damping).
+      if (o.newton_phase_fresh_damping && first && i > 0 && i > from) lambda = o.initial_damping;
       if (!first) step.stage.rms_limit = (1.0 + o.worst_rms_growth) * first_stage_rms;
       run_rounds(mesh, now, lambda, points, field_of, o, start, step.stage, *step.values, history, guard, clearance,
                  progress);

@@ -14,6 +14,8 @@
 #                         (holes) or the triangles turned round (flipped);
 #                         without it, input_repair must be null
 #   ARGS=<options>        more options for skeletonize, separated by spaces (e.g. "--method curve")
+#   DEFAULT_STAGES=ON     run without --report-stages (its default: the result
+#                         only) and check that no other stage carries distances
 #   EXIT=<code>, STDERR=<substring>: a refused input; then neither <prefix>.json
 #                         nor <prefix>_report.json may exist afterwards.
 # The measured numbers are printed, so that `ctest -V` shows them.
@@ -23,8 +25,10 @@ set(skeleton ${OUT}.json)
 set(report ${OUT}_report.json)
 file(REMOVE ${skeleton} ${report})
 separate_arguments(args UNIX_COMMAND "${ARGS}")
-execute_process(COMMAND ${SKELCONV} skeletonize ${INPUT} -o ${skeleton} --report ${report} --report-stages result --quiet
-                        ${args}
+if(NOT DEFAULT_STAGES)
+  list(APPEND args --report-stages result)
+endif()
+execute_process(COMMAND ${SKELCONV} skeletonize ${INPUT} -o ${skeleton} --report ${report} --quiet ${args}
                 OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr RESULT_VARIABLE exit_code)
 set(run "skelconv skeletonize ${INPUT}\nexit code: ${exit_code}\nstdout:\n${stdout}\nstderr:\n${stderr}")
 if(NOT DEFINED EXIT)
@@ -64,6 +68,22 @@ message(STATUS "${INPUT}: result ${name}, ${points} point primitive(s), Hausdorf
                "${components_out} out")
 if(NOT result STREQUAL name)
   message(FATAL_ERROR "the report's result (${result}) is not its last stage (${name})\n${run}")
+endif()
+if(DEFAULT_STAGES)
+  # The stages before the result keep their counts; a measured one would
+  # carry its distances (or not_measured, when over the measuring budget).
+  if(last EQUAL 0)
+    message(FATAL_ERROR "DEFAULT_STAGES needs a result after other stages, got one stage\n${run}")
+  endif()
+  math(EXPR before "${last} - 1")
+  foreach(k RANGE ${before})
+    string(JSON stage GET "${json}" stages ${k} name)
+    string(JSON distance ERROR_VARIABLE absent GET "${json}" stages ${k} hausdorff)
+    string(JSON refused ERROR_VARIABLE not_refused GET "${json}" stages ${k} not_measured)
+    if(NOT absent OR NOT not_refused)
+      message(FATAL_ERROR "stage ${stage} was measured without --report-stages; only the result should be\n${run}")
+    endif()
+  endforeach()
 endif()
 if(DEFINED RESULT AND NOT name STREQUAL RESULT)
   message(FATAL_ERROR "expected the result ${RESULT}, got ${name}\n${run}")

@@ -68,7 +68,6 @@ RMS_GOAL, PRIMITIVE_GOAL = 0.4, 500
 SHORTFALLS = {
     "femur.off": ["H", "χ"],
     "couplingdown.off": ["RMS"],
-    "rotor.off": ["RMS"],
     "cow.off": ["H"],
 }
 BEGIN, END = "<!-- real-shapes table: tests/reconstruct/real_shapes.py -->", "<!-- end of the real-shapes table -->"

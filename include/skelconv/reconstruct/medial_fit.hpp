@@ -78,6 +78,16 @@ struct MedialFitOptions {
   /// Rounds at most of the first-order start (first_order_start), within
   /// `rounds`.
   int first_order_rounds = 14;
+  /// The first-order start stops sooner than the Newton phase: when its
+  /// objective falls by less than this a round over stall_rounds rounds.
+  /// It is there to bring the reconstruction near the input, where the
+  /// Newton distances' linear model holds, not to converge: its last
+  /// rounds at 1% fit first-order distances the Newton phase then undoes.
+  /// 5%, with newton_phase_fresh_damping: the rotor's RMS distance 0.443% →
+  /// 0.359%, the coarse sphere's 0.258% → 0.218%; alone it took the
+  /// 3torus over its Hausdorff goal (docs/reconstruction_medial.md, "The
+  /// start ended sooner").
+  double first_order_stall_fall = 0.05;
   /// With newton_steps > 0, the first stage starts on first-order distances
   /// and takes the Newton steps only once that has stalled. From the
   /// medial balls the reconstruction is far from the input (0.1 of the
@@ -94,6 +104,13 @@ struct MedialFitOptions {
   /// before it gives up (the step then barely moves: the fit has stopped).
   double initial_damping = 1e-3;
   int damping_attempts = 6;
+  /// The Newton phase starts from initial_damping, not from the λ the
+  /// first-order start ended with: λ climbs while a phase stalls (the
+  /// rotor's start ended at λ 140 after rounds that fell by 0.1%), and the
+  /// Newton phase minimises other distances, whose steps that λ would
+  /// shorten until the phase stops as stalled after two rounds
+  /// (docs/reconstruction_medial.md, "The start ended sooner").
+  bool newton_phase_fresh_damping = true;
   /// Whether the centres move too (otherwise only the radii do).
   bool fit_centres = true;
   /// Huber's loss is quadratic in δ up to this × the points' bounding-box
