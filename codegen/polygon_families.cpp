@@ -206,12 +206,16 @@ class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
                         {}, {}, {}};
       // R² − |P − Q|² at the edge's ends from the exact inputs (support_gap.hpp):
       // q at an end the clip keeps, without the cancellation of w − ρ²/R².
+      // The chord reads an end's gap only where the clip keeps that end
+      // (t0 = 0 for A, t1 = 1 for B; the clip stays in [0, 1]), so each
+      // exact gap is computed there only: a clipped end costs nothing.
       std::array<ArrayCall, 2> gaps;
       for (int end = 0; end < 2; ++end) {
         const std::array<symbol, 3>& q = end == 0 ? A_ : B_;
         gaps[end] = support_gap_call(end == 0 ? "gap_A" : "gap_B", "exact_point_support_gap<T>",
                                      {q[0], q[1], q[2], point_[0], point_[1], point_[2]},
                                      helper_costs::point_support_gap());
+        gaps[end].guard = {end == 0 ? -t0 : t1 - 1};
       }
       ArrayCall call{"G_chord", "polygon_edge_G_compact_chord<T>", {std::to_string(p_lo), std::to_string(p_hi)},
                      {h_, ab_ab_, w, inv_R2, slope0, slope1, t0, t1, gaps[0].elements[0], gaps[1].elements[0]}, {},

@@ -99,10 +99,14 @@ void polygon_edge_compact_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     G_f = -inv_R2 * (J_minus0 * zeta2 * zeta2 + J_minus4 + zeta2 * J_minus2) * h;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(3, 3, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -189,10 +193,14 @@ void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     G_g = -(J_minus0 * zeta2 + J_minus2) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(2, 2, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -282,10 +290,14 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
     G_g = -(J_minus0 * zeta2 + J_minus2) * inv_R2 * h;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 2> G_chord;
     polygon_edge_G_compact_chord<T>(2, 3, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -379,10 +391,14 @@ void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     G_f = -h * (J_minus2 * zeta2 * zeta2 + J_minus4 * zeta2 + J_minus6 + t6 * J_minus0) * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(4, 4, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -471,10 +487,14 @@ void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     G_g = -h * (zeta2 * zeta2 * J_minus0 + J_minus4 + J_minus2 * zeta2) * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(3, 3, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -568,10 +588,14 @@ void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
     G_g = -h * inv_R2 * (J_minus4 + J_minus0 * t5 + J_minus2 * zeta2);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 2> G_chord;
     polygon_edge_G_compact_chord<T>(3, 4, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -668,10 +692,14 @@ void polygon_edge_compact_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     G_f = -(J_minus8 + J_minus0 * t6 + t7 * J_minus2 + J_minus4 * t5 + J_minus6 * zeta2) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(5, 5, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -764,10 +792,14 @@ void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     G_g = -h * inv_R2 * (t6 * J_minus0 + J_minus4 * zeta2 + t5 * J_minus2 + J_minus6);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(4, 4, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -864,10 +896,14 @@ void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
     G_g = -(zeta2 * J_minus4 + J_minus2 * t5 + J_minus0 * t6 + J_minus6) * inv_R2 * h;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 2> G_chord;
     polygon_edge_G_compact_chord<T>(4, 5, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -967,10 +1003,14 @@ void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
     G_f = -h * inv_R2 * (t6 * J_minus4 + t7 * J_minus2 + J_minus0 * t8 + J_minus10 + J_minus8 * zeta2 + J_minus6 * t5);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(6, 6, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -1066,10 +1106,14 @@ void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
     G_g = -h * inv_R2 * (J_minus4 * zeta2 * zeta2 + J_minus2 * t6 + J_minus0 * t7 + J_minus8 + J_minus6 * zeta2);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(5, 5, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -1169,10 +1213,14 @@ void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
     G_g = -h * inv_R2 * (J_minus0 * t7 + t5 * J_minus4 + t6 * J_minus2 + J_minus6 * zeta2 + J_minus8);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 2> G_chord;
     polygon_edge_G_compact_chord<T>(5, 6, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -1275,10 +1323,14 @@ void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
     G_f = -h * inv_R2 * (t7 * J_minus2 + zeta2 * J_minus10 + t8 * J_minus6 + t6 * J_minus4 + J_minus12 + J_minus8 * t5 + J_minus0 * t9);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(7, 7, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -1377,10 +1429,14 @@ void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
     G_g = -(t6 * J_minus4 + t8 * J_minus0 + J_minus10 + zeta2 * J_minus8 + t5 * J_minus6 + t7 * J_minus2) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(6, 6, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -1483,10 +1539,14 @@ void polygon_edge_compact_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
     G_g = -(zeta2 * J_minus8 + t7 * J_minus0 + t6 * J_minus2 + t8 * J_minus4 + t5 * J_minus6 + J_minus10) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 2> G_chord;
     polygon_edge_G_compact_chord<T>(6, 7, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
