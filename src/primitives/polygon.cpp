@@ -246,34 +246,35 @@ Polygon::Polygon(std::span<const Vec3> vertices, const KernelSpec& kernel) : ker
     }
   }
   singular_at_zero_ = facts.singular_at_zero;
-  // Each level's s and R in the frame, once, rather than at every point.
+  // Each level's s and R in the frame and its generated kernel, once, rather than at every point.
   const auto in_polygon_frame = [&](KernelSpec level) {
     level.s = frame_.scaled(level.s, -2);
     level.R = frame_.scaled(level.R, 1);
     return level;
   };
+  const auto add_level = [&](double coefficient, const KernelSpec& level) {
+    require_supported_degree(level);  // for a compact level: the generator's polygon degrees must include it
+    levels_.push_back({coefficient, in_polygon_frame(level), &polygon_edge_kernel<double>(level.family, level.degree)});
+  };
   if (facts.compact_levels.empty()) {
-    require_supported_degree(kernel);
-    levels_.push_back({1.0, in_polygon_frame(kernel)});
+    add_level(1.0, kernel);
   } else {
-    for (const kernels::CompactLevel& level : facts.compact_levels) {
-      const KernelSpec compact = KernelSpec::compact(level.degree, kernel.R);
-      require_supported_degree(compact);  // the generator's polygon degrees must include it
-      levels_.push_back({double(level.numerator) / level.denominator, in_polygon_frame(compact)});
-    }
+    for (const kernels::CompactLevel& level : facts.compact_levels)
+      add_level(double(level.numerator) / level.denominator, KernelSpec::compact(level.degree, kernel.R));
   }
 }
 
 std::vector<int> Polygon::supported_degrees(KernelFamily family) { return polygon_supported_degrees(family); }
 
-PolygonInput<double> Polygon::closed_form_input(const KernelSpec& level) const {
+PolygonInput<double> Polygon::closed_form_input(const Level& level) const {
   PolygonInput<double> input;
   input.vertices = vertex_arrays_;
   input.normal = to_array(normal_);
-  input.family = level.family;
-  input.degree = level.degree;
-  input.s = level.s;  // in the frame already (levels_)
-  input.R = level.R;
+  input.family = level.kernel.family;
+  input.degree = level.kernel.degree;
+  input.s = level.kernel.s;  // in the frame already (levels_)
+  input.R = level.kernel.R;
+  input.edge_kernel = level.edge_kernel;
   return input;
 }
 
@@ -293,7 +294,8 @@ Polygon::Case Polygon::prepare(const Vec3& p, Vec3& frame_p) const {
 double Polygon::sum_of_levels(const Vec3& frame_p, std::array<double, 3>* gradient) const {
   double f = 0.0;
   if (gradient != nullptr) *gradient = {};
-  for (const auto& [coefficient, level] : levels_) {
+  for (const Level& level : levels_) {
+    const double coefficient = level.coefficient;
     const PolygonInput<double> input = closed_form_input(level);
     if (gradient == nullptr) {
       f += coefficient * polygon_f(input, to_array(frame_p));
@@ -365,7 +367,7 @@ Vec3 Polygon::gradient(const Vec3& p) const {
     case Case::call_closed_form: break;
   }
   const std::array<double, 3> g = detail::evaluate_converged("polygon_grad", p, [&] {
-    if (levels_.size() == 1) return polygon_grad(closed_form_input(levels_.front().second), to_array(q));
+    if (levels_.size() == 1) return polygon_grad(closed_form_input(levels_.front()), to_array(q));
     std::array<double, 3> sum{};
     sum_of_levels(q, &sum);
     return sum;
