@@ -234,6 +234,7 @@ Polygon::Polygon(std::span<const Vec3> vertices, const KernelSpec& kernel) : ker
   detail::require_valid_kernel_parameter(kernel);
   const kernels::FamilyFacts facts = kernels::family_facts(kernel.family);
   value_power_ = 2 + kernels::scaling_power(kernel);  // f ~ area · K: λ^(2 + p) (radial_kernel.hpp)
+  factors_ = frame_.factors(value_power_);
   support_radius_ = kernels::support_radius(kernels::make_radial_kernel(kernel));
   if (std::isfinite(support_radius_)) {
     detail::require_support_radius_in_frame(frame_.scaled(kernel.R, 1), "polygon's diameter");
@@ -280,7 +281,8 @@ PolygonInput<double> Polygon::closed_form_input(const Level& level) const {
 
 Polygon::Case Polygon::prepare(const Vec3& p, Vec3& frame_p) const {
   detail::require_finite_query_point(p);
-  frame_p = frame_.point(p);
+  // One product by 2^−e where that is a normal double: frame_.point's own fast path.
+  frame_p = factors_.to_frame != 0.0 ? Vec3(p * factors_.to_frame) : frame_.point(p);
   if (!frame_p.allFinite()) {
     throw EvaluationError(fmt::format("P = {} is too far from the polygon (more than ~2^1000 times its diameter "
                                       "from the origin): the field is outside the range of double precision",
@@ -341,10 +343,14 @@ double Polygon::restore_value(double f, const char* function, const Vec3& p) con
   // Inverse and Cauchy fields are positive; only a finite-support one (compact,
   // soft, wyvill) can be 0
   // (grazing its support).
+  double world;
+  if (restore_value_common(f, factors_.value, world)) return world;  // frame_.restore_value's common case
   return frame_.restore_value(f, value_power_, std::isfinite(support_radius_), function, p);
 }
 
 Vec3 Polygon::restore_gradient(const std::array<double, 3>& g, const char* function, const Vec3& p) const {
+  Vec3 world;
+  if (restore_gradient_common(to_vec3(g), factors_.gradient, world)) return world;  // its common case
   return frame_.restore_gradient(to_vec3(g), value_power_ - 1, std::isfinite(support_radius_), function, p);
 }
 

@@ -169,6 +169,9 @@ class Polygon {
   ScaledFrame frame_;
   /// f has units length^value_power_: 2 − i (inverse) or 2.
   int value_power_ = 2;
+  /// frame_'s powers of two for value_power_, computed once: prepare and
+  /// the restore functions run at every evaluation.
+  FrameFactors factors_;
   std::vector<std::array<double, 3>> vertex_arrays_;  ///< vertices_ in the frame, as the closed forms take them
   Vec3 normal_ = Vec3::UnitZ();
   double area_ = 0.0;
