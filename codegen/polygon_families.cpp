@@ -21,6 +21,12 @@ const ex kNearPlaneRatio = numeric(2);
 // Compact kernels: the closed form G^(p) = w^p θ_in − … is used for a chord
 // that comes within √kChordRimRatio of the support disc's radius of P̄.
 const ex kChordRimRatio = numeric(1, 4);
+// Compact kernels: a vertex Q with |P − Q|² ≥ (1 + kClearlyOutside) R² in
+// plain arithmetic (from P and Q themselves, a relative error of a few ε
+// wherever they lie) is outside the support ball for sure: its exact support
+// gap is negative, and the chord form, which reads only max(0, gap), needs
+// no exact value there.
+const ex kClearlyOutside = numeric(1, 16);
 
 // A polygon edge is a segment from Q_m to Q_{m+1} seen from P̄, whose
 // quadratic has the constant term ζ² = β + α z² instead of β: everything
@@ -206,12 +212,20 @@ class PolygonEdgeProgramBuilder : public SegmentProgramBuilder {
                         {}, {}, {}};
       // R² − |P − Q|² at the edge's ends from the exact inputs (support_gap.hpp):
       // q at an end the clip keeps, without the cancellation of w − ρ²/R².
+      // The chord reads an end's gap only where the clip keeps that end
+      // (t0 = 0 for A, t1 = 1 for B; the clip stays in [0, 1]), and only as
+      // max(0, gap), so each exact gap is computed there only: a clipped
+      // end costs nothing. An edge the disc misses has t0 = t1 = 0: its A
+      // is skipped too where it is clearly outside the ball (kClearlyOutside).
+      const ex clearly_outside_A = (1 + kClearlyOutside) * pow(radius_, 2) - pow(point_[0] - A_[0], 2) -
+                                   pow(point_[1] - A_[1], 2) - pow(point_[2] - A_[2], 2);
       std::array<ArrayCall, 2> gaps;
       for (int end = 0; end < 2; ++end) {
         const std::array<symbol, 3>& q = end == 0 ? A_ : B_;
         gaps[end] = support_gap_call(end == 0 ? "gap_A" : "gap_B", "exact_point_support_gap<T>",
                                      {q[0], q[1], q[2], point_[0], point_[1], point_[2]},
                                      helper_costs::point_support_gap());
+        gaps[end].guard = end == 0 ? std::vector<ex>{-t0, clearly_outside_A} : std::vector<ex>{t1 - 1};
       }
       ArrayCall call{"G_chord", "polygon_edge_G_compact_chord<T>", {std::to_string(p_lo), std::to_string(p_hi)},
                      {h_, ab_ab_, w, inv_R2, slope0, slope1, t0, t1, gaps[0].elements[0], gaps[1].elements[0]}, {},

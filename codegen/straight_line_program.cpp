@@ -163,8 +163,10 @@ class Emitter {
   static void for_each_expression(const Alternative& alt, Visit&& visit) {
     for (const ex& c : alt.conditions) visit(c);
     for (const auto& [s, v] : alt.steps) visit(v);
-    for (const ArrayCall& call : alt.calls)
+    for (const ArrayCall& call : alt.calls) {
+      for (const ex& c : call.guard) visit(c);
       for (const ex& a : call.args) visit(a);
+    }
     for (const ex& v : alt.values) visit(v);
     if (alt.refinement) {
       for (const ex& c : alt.refinement->conditions) visit(c);
@@ -501,8 +503,21 @@ class Emitter {
     std::string args;
     for (const std::string& a : call.fixed_args) args += a + ", ";
     for (const ex& a : call.args) args += emit(a).s + ", ";
-    line("std::array<T, " + std::to_string(call.elements.size()) + "> " + call.array + ";");
-    line(call.function + "(" + args + call.array + ".data());");
+    std::string guard;
+    for (const ex& c : call.guard) guard += (guard.empty() ? "" : " && ") + condition_text(c);
+    const std::string statement = call.function + "(" + args + call.array + ".data());";
+    const std::string declaration = "std::array<T, " + std::to_string(call.elements.size()) + "> " + call.array;
+    if (guard.empty()) {
+      line(declaration + ";");
+      line(statement);
+    } else {
+      line(declaration + "{};  // 0 where the call is not made");
+      line("if (" + guard + ") {");
+      scopes_.emplace_back();  // for the indentation only: nothing is computed inside
+      line(statement);
+      scopes_.pop_back();
+      line("}");
+    }
     scopes_.back().generic += call.ops;
     scopes_.back().longest += call.ops;
     for (size_t i = 0; i < call.elements.size(); ++i)
@@ -817,8 +832,10 @@ StraightLineProgram PreparedQuantities::per_point_part(const StraightLineProgram
           steps.emplace_back(s, transform(v));
       }
       alt.steps = std::move(steps);
-      for (ArrayCall& call : alt.calls)
+      for (ArrayCall& call : alt.calls) {
+        for (ex& c : call.guard) c = transform(c);
         for (ex& a : call.args) a = transform(a);
+      }
       for (ex& v : alt.values) v = transform(v);
       if (alt.refinement) {
         for (ex& c : alt.refinement->conditions) c = transform(c);

@@ -41,6 +41,11 @@ struct ArrayCall {
   /// The same cost at every P (a fixed Gauss rule). Alternatives that call a
   /// helper without a fixed rule are left out of generic_only programs.
   bool fixed_rule = false;
+  /// The call is made only where every condition here is >= 0 (written as
+  /// an Alternative's conditions are); elsewhere its elements are 0. For a
+  /// result that what reads it ignores outside the guard: the call's cost
+  /// is then paid only where it is read. The operation counts include it.
+  std::vector<GiNaC::ex> guard = {};
 };
 
 /// One alternative form of some quantities. It is taken when every

@@ -27,7 +27,7 @@ namespace skelconv::generated {
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ
 /// Operations per edge: 87 +, 144 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 839 +, 1001 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 845 +, 1006 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -99,10 +99,18 @@ void polygon_edge_compact_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     G_f = -inv_R2 * (J_minus0 * zeta2 * zeta2 + J_minus4 + zeta2 * J_minus2) * h;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    const T t5 = in.point[2] - in.a[2];
+    const T t6 = in.point[0] - in.a[0];
+    const T t7 = in.a[1] - in.point[1];
+    const T t8 = (T(17) / T(16)) * in.R * in.R - t5 * t5 - t6 * t6 - t7 * t7;
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0) && t8 >= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(3, 3, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -117,7 +125,7 @@ void polygon_edge_compact_i4_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ
 /// Operations per edge: 86 +, 142 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 839 +, 921 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 845 +, 926 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -189,10 +197,18 @@ void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     G_g = -(J_minus0 * zeta2 + J_minus2) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    const T t5 = in.point[1] - in.a[1];
+    const T t6 = in.point[0] - in.a[0];
+    const T t7 = in.point[2] - in.a[2];
+    const T t8 = (T(17) / T(16)) * in.R * in.R - t5 * t5 - t6 * t6 - t7 * t7;
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0) && t8 >= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(2, 2, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -208,7 +224,7 @@ void polygon_edge_compact_i4_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(4/2) dQ
 /// Operations per edge: 88 +, 147 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 919 +, 1081 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 925 +, 1086 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -282,10 +298,18 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
     G_g = -(J_minus0 * zeta2 + J_minus2) * inv_R2 * h;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    const T t5 = in.point[2] - in.a[2];
+    const T t6 = in.a[1] - in.point[1];
+    const T t7 = in.point[0] - in.a[0];
+    const T t8 = (T(17) / T(16)) * in.R * in.R - t5 * t5 - t6 * t6 - t7 * t7;
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0) && t8 >= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 2> G_chord;
     polygon_edge_G_compact_chord<T>(2, 3, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -303,7 +327,7 @@ void polygon_edge_compact_i4_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ
 /// Operations per edge: 95 +, 161 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 846 +, 1095 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 852 +, 1100 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -379,10 +403,18 @@ void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     G_f = -h * (J_minus2 * zeta2 * zeta2 + J_minus4 * zeta2 + J_minus6 + t6 * J_minus0) * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    const T t7 = in.point[2] - in.a[2];
+    const T t8 = in.point[0] - in.a[0];
+    const T t9 = in.point[1] - in.a[1];
+    const T t10 = (T(17) / T(16)) * in.R * in.R - t7 * t7 - t8 * t8 - t9 * t9;
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0) && t10 >= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(4, 4, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -397,7 +429,7 @@ void polygon_edge_compact_i6_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ
 /// Operations per edge: 94 +, 158 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 846 +, 1015 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 852 +, 1020 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -471,10 +503,18 @@ void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     G_g = -h * (zeta2 * zeta2 * J_minus0 + J_minus4 + J_minus2 * zeta2) * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    const T t5 = in.point[2] - in.a[2];
+    const T t6 = in.a[0] - in.point[0];
+    const T t7 = in.point[1] - in.a[1];
+    const T t8 = (T(17) / T(16)) * in.R * in.R - t5 * t5 - t6 * t6 - t7 * t7;
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0) && t8 >= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(3, 3, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -490,7 +530,7 @@ void polygon_edge_compact_i6_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(6/2) dQ
 /// Operations per edge: 97 +, 164 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 926 +, 1175 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 932 +, 1180 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -568,10 +608,18 @@ void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
     G_g = -h * inv_R2 * (J_minus4 + J_minus0 * t5 + J_minus2 * zeta2);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    const T t7 = in.point[1] - in.a[1];
+    const T t8 = in.point[2] - in.a[2];
+    const T t9 = in.point[0] - in.a[0];
+    const T t10 = (T(17) / T(16)) * in.R * in.R - t7 * t7 - t8 * t8 - t9 * t9;
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0) && t10 >= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 2> G_chord;
     polygon_edge_G_compact_chord<T>(3, 4, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -589,7 +637,7 @@ void polygon_edge_compact_i6_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
 /// Operations per edge: 103 +, 176 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 853 +, 1189 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 859 +, 1194 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -668,10 +716,18 @@ void polygon_edge_compact_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
     G_f = -(J_minus8 + J_minus0 * t6 + t7 * J_minus2 + J_minus4 * t5 + J_minus6 * zeta2) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    const T t8 = in.point[2] - in.a[2];
+    const T t9 = in.point[1] - in.a[1];
+    const T t10 = in.point[0] - in.a[0];
+    const T t11 = (T(17) / T(16)) * in.R * in.R - t8 * t8 - t9 * t9 - t10 * t10;
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0) && t11 >= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(5, 5, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -686,7 +742,7 @@ void polygon_edge_compact_i8_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
 /// Operations per edge: 102 +, 174 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 853 +, 1109 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 859 +, 1114 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -764,10 +820,18 @@ void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
     G_g = -h * inv_R2 * (t6 * J_minus0 + J_minus4 * zeta2 + t5 * J_minus2 + J_minus6);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    const T t7 = in.a[0] - in.point[0];
+    const T t8 = in.a[1] - in.point[1];
+    const T t9 = in.point[2] - in.a[2];
+    const T t10 = (T(17) / T(16)) * in.R * in.R - t7 * t7 - t8 * t8 - t9 * t9;
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0) && t10 >= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(4, 4, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -783,7 +847,7 @@ void polygon_edge_compact_i8_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerm
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(8/2) dQ
 /// Operations per edge: 106 +, 181 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 933 +, 1269 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 939 +, 1274 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -864,10 +928,18 @@ void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
     G_g = -(zeta2 * J_minus4 + J_minus2 * t5 + J_minus0 * t6 + J_minus6) * inv_R2 * h;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    const T t8 = in.point[2] - in.a[2];
+    const T t9 = in.point[0] - in.a[0];
+    const T t10 = in.point[1] - in.a[1];
+    const T t11 = (T(17) / T(16)) * in.R * in.R - t8 * t8 - t9 * t9 - t10 * t10;
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0) && t11 >= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 2> G_chord;
     polygon_edge_G_compact_chord<T>(4, 5, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -885,7 +957,7 @@ void polygon_edge_compact_i8_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEd
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
 /// Operations per edge: 111 +, 192 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 860 +, 1283 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 866 +, 1288 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -967,10 +1039,18 @@ void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
     G_f = -h * inv_R2 * (t6 * J_minus4 + t7 * J_minus2 + J_minus0 * t8 + J_minus10 + J_minus8 * zeta2 + J_minus6 * t5);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    const T t9 = in.point[0] - in.a[0];
+    const T t10 = in.point[2] - in.a[2];
+    const T t11 = in.point[1] - in.a[1];
+    const T t12 = (T(17) / T(16)) * in.R * in.R - t9 * t9 - t10 * t10 - t11 * t11;
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0) && t12 >= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(6, 6, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -985,7 +1065,7 @@ void polygon_edge_compact_i10_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
 /// Operations per edge: 110 +, 191 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 860 +, 1203 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 866 +, 1208 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1066,10 +1146,18 @@ void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
     G_g = -h * inv_R2 * (J_minus4 * zeta2 * zeta2 + J_minus2 * t6 + J_minus0 * t7 + J_minus8 + J_minus6 * zeta2);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    const T t8 = in.point[2] - in.a[2];
+    const T t9 = in.point[0] - in.a[0];
+    const T t10 = in.point[1] - in.a[1];
+    const T t11 = (T(17) / T(16)) * in.R * in.R - t8 * t8 - t9 * t9 - t10 * t10;
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0) && t11 >= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(5, 5, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -1085,7 +1173,7 @@ void polygon_edge_compact_i10_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(10/2) dQ
 /// Operations per edge: 115 +, 198 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 940 +, 1363 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 946 +, 1368 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1169,10 +1257,18 @@ void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
     G_g = -h * inv_R2 * (J_minus0 * t7 + t5 * J_minus4 + t6 * J_minus2 + J_minus6 * zeta2 + J_minus8);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    const T t9 = in.point[0] - in.a[0];
+    const T t10 = in.point[2] - in.a[2];
+    const T t11 = in.a[1] - in.point[1];
+    const T t12 = (T(17) / T(16)) * in.R * in.R - t9 * t9 - t10 * t10 - t11 * t11;
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0) && t12 >= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 2> G_chord;
     polygon_edge_G_compact_chord<T>(5, 6, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -1190,7 +1286,7 @@ void polygon_edge_compact_i10_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
 /// The terms of one edge for f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ
 /// Operations per edge: 119 +, 208 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 867 +, 1377 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 873 +, 1382 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1275,10 +1371,18 @@ void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
     G_f = -h * inv_R2 * (t7 * J_minus2 + zeta2 * J_minus10 + t8 * J_minus6 + t6 * J_minus4 + J_minus12 + J_minus8 * t5 + J_minus0 * t9);
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    const T t10 = in.point[1] - in.a[1];
+    const T t11 = in.point[2] - in.a[2];
+    const T t12 = in.point[0] - in.a[0];
+    const T t13 = (T(17) / T(16)) * in.R * in.R - t10 * t10 - t11 * t11 - t12 * t12;
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0) && t13 >= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(7, 7, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -1293,7 +1397,7 @@ void polygon_edge_compact_i12_f(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<
 /// The terms of one edge for ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ
 /// Operations per edge: 118 +, 206 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 867 +, 1297 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 873 +, 1302 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1377,10 +1481,18 @@ void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
     G_g = -(t6 * J_minus4 + t8 * J_minus0 + J_minus10 + zeta2 * J_minus8 + t5 * J_minus6 + t7 * J_minus2) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    const T t9 = in.point[1] - in.a[1];
+    const T t10 = in.point[2] - in.a[2];
+    const T t11 = in.point[0] - in.a[0];
+    const T t12 = (T(17) / T(16)) * in.R * in.R - t9 * t9 - t10 * t10 - t11 * t11;
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0) && t12 >= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 1> G_chord;
     polygon_edge_G_compact_chord<T>(6, 6, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);
@@ -1396,7 +1508,7 @@ void polygon_edge_compact_i12_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTer
 /// The terms of one edge for f and ∇f (skelconv/primitives/polygon_field.hpp adds them up), where
 ///     C(P) = ∬_Ω (1 − |P − Q|²/R²)^(12/2) dQ
 /// Operations per edge: 124 +, 215 ×, 3 /, 0 sqrt, 2 atan, 0 log/asinh (generic form).
-/// Longest path: 947 +, 1457 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
+/// Longest path: 953 +, 1462 ×, 92 /, 5 sqrt, 1 atan, 0 log/asinh.
 template <class T>
 void polygon_edge_compact_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonEdgeTerms<T>& out) {
   using std::asinh, std::atan2, std::log, std::max, std::min, std::sqrt;
@@ -1483,10 +1595,18 @@ void polygon_edge_compact_i12_f_and_grad(const PolygonEdgeInput<T>& in, PolygonE
     G_g = -(zeta2 * J_minus8 + t7 * J_minus0 + t6 * J_minus2 + t8 * J_minus4 + t5 * J_minus6 + J_minus10) * h * inv_R2;
   } else {
     // chord near the rim of the support disc: G^(p) = sgn(h) ∫ q^p du/(1 + u²), u = tan φ, polygon_edge_G_compact_chord (Gauss–Legendre panels)
-    std::array<T, 1> gap_A;
-    exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
-    std::array<T, 1> gap_B;
-    exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    const T t10 = in.point[0] - in.a[0];
+    const T t11 = in.point[1] - in.a[1];
+    const T t12 = in.point[2] - in.a[2];
+    const T t13 = (T(17) / T(16)) * in.R * in.R - t10 * t10 - t11 * t11 - t12 * t12;
+    std::array<T, 1> gap_A{};  // 0 where the call is not made
+    if (in.t0 <= T(0) && t13 >= T(0)) {
+      exact_point_support_gap<T>(in.a[0], in.a[1], in.a[2], in.point[0], in.point[1], in.point[2], in.R, gap_A.data());
+    }
+    std::array<T, 1> gap_B{};  // 0 where the call is not made
+    if (in.t1 >= T(1)) {
+      exact_point_support_gap<T>(in.b[0], in.b[1], in.b[2], in.point[0], in.point[1], in.point[2], in.R, gap_B.data());
+    }
     std::array<T, 2> G_chord;
     polygon_edge_G_compact_chord<T>(6, 7, h, ab_ab, zeta2, inv_R2, plane_slope0, plane_slope1, in.t0, in.t1, gap_A[0], gap_B[0], G_chord.data());
     theta_in = T(0);

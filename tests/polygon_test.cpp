@@ -406,6 +406,26 @@ TEST(PolygonValues, CompactSupportCuttingThePolygon) {
   }
 }
 
+TEST(PolygonValues, CompactSupportHoldingOneCornerNearItsRim) {
+  // P's foot (−0.35, −0.35) beyond the corner (0, 0) of the unit square,
+  // support disc radius √(R² − z²) ≈ 0.59: the disc holds that corner, 0.49
+  // from the foot, and clips both edges that meet there, whose lines pass
+  // 0.35 from the foot, beyond half the disc radius. Each of the two edges
+  // is then summed by the chord form near the rim, which reads the exact
+  // support gap at the corner: at the start of the edge (0, 0) → (1, 0)
+  // and at the end of the edge (0, 1) → (0, 0). The support meets only
+  // [0, 0.3]², so the reference integrates that square, finely.
+  const std::vector<Vec3> corner{{0, 0, 0}, {0.3, 0, 0}, {0.3, 0.3, 0}, {0, 0.3, 0}};
+  for (int degree : Polygon::supported_degrees(KernelFamily::compact)) {
+    const KernelSpec kernel = KernelSpec::compact(degree, 0.6);
+    const Polygon polygon(unit_square, kernel);
+    for (const Vec3& p : {Vec3(-0.35, -0.35, 0.1), Vec3(-0.35, -0.35, -0.05)}) {
+      const ReferenceSample expected = integrate_polygon(corner, kernel, p, 48);
+      expect_matches(polygon, p, double(expected.value), expected.gradient.cast<double>(), 1e-6);
+    }
+  }
+}
+
 TEST(PolygonValues, NonConvexPolygonIsTheSumOfItsParts) {
   // An L shape = two rectangles sharing the edge x = 1, 0 ≤ y ≤ 1: the field
   // is additive over the region (no reference closed form involved).

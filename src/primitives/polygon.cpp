@@ -234,6 +234,7 @@ Polygon::Polygon(std::span<const Vec3> vertices, const KernelSpec& kernel) : ker
   detail::require_valid_kernel_parameter(kernel);
   const kernels::FamilyFacts facts = kernels::family_facts(kernel.family);
   value_power_ = 2 + kernels::scaling_power(kernel);  // f ~ area · K: λ^(2 + p) (radial_kernel.hpp)
+  factors_ = frame_.factors(value_power_);
   support_radius_ = kernels::support_radius(kernels::make_radial_kernel(kernel));
   if (std::isfinite(support_radius_)) {
     detail::require_support_radius_in_frame(frame_.scaled(kernel.R, 1), "polygon's diameter");
@@ -246,40 +247,42 @@ Polygon::Polygon(std::span<const Vec3> vertices, const KernelSpec& kernel) : ker
     }
   }
   singular_at_zero_ = facts.singular_at_zero;
-  // Each level's s and R in the frame, once, rather than at every point.
+  // Each level's s and R in the frame and its generated kernel, once, rather than at every point.
   const auto in_polygon_frame = [&](KernelSpec level) {
     level.s = frame_.scaled(level.s, -2);
     level.R = frame_.scaled(level.R, 1);
     return level;
   };
+  const auto add_level = [&](double coefficient, const KernelSpec& level) {
+    require_supported_degree(level);  // for a compact level: the generator's polygon degrees must include it
+    levels_.push_back({coefficient, in_polygon_frame(level), &polygon_edge_kernel<double>(level.family, level.degree)});
+  };
   if (facts.compact_levels.empty()) {
-    require_supported_degree(kernel);
-    levels_.push_back({1.0, in_polygon_frame(kernel)});
+    add_level(1.0, kernel);
   } else {
-    for (const kernels::CompactLevel& level : facts.compact_levels) {
-      const KernelSpec compact = KernelSpec::compact(level.degree, kernel.R);
-      require_supported_degree(compact);  // the generator's polygon degrees must include it
-      levels_.push_back({double(level.numerator) / level.denominator, in_polygon_frame(compact)});
-    }
+    for (const kernels::CompactLevel& level : facts.compact_levels)
+      add_level(double(level.numerator) / level.denominator, KernelSpec::compact(level.degree, kernel.R));
   }
 }
 
 std::vector<int> Polygon::supported_degrees(KernelFamily family) { return polygon_supported_degrees(family); }
 
-PolygonInput<double> Polygon::closed_form_input(const KernelSpec& level) const {
+PolygonInput<double> Polygon::closed_form_input(const Level& level) const {
   PolygonInput<double> input;
   input.vertices = vertex_arrays_;
   input.normal = to_array(normal_);
-  input.family = level.family;
-  input.degree = level.degree;
-  input.s = level.s;  // in the frame already (levels_)
-  input.R = level.R;
+  input.family = level.kernel.family;
+  input.degree = level.kernel.degree;
+  input.s = level.kernel.s;  // in the frame already (levels_)
+  input.R = level.kernel.R;
+  input.edge_kernel = level.edge_kernel;
   return input;
 }
 
 Polygon::Case Polygon::prepare(const Vec3& p, Vec3& frame_p) const {
   detail::require_finite_query_point(p);
-  frame_p = frame_.point(p);
+  // One product by 2^−e where that is a normal double: frame_.point's own fast path.
+  frame_p = factors_.to_frame != 0.0 ? Vec3(p * factors_.to_frame) : frame_.point(p);
   if (!frame_p.allFinite()) {
     throw EvaluationError(fmt::format("P = {} is too far from the polygon (more than ~2^1000 times its diameter "
                                       "from the origin): the field is outside the range of double precision",
@@ -293,7 +296,8 @@ Polygon::Case Polygon::prepare(const Vec3& p, Vec3& frame_p) const {
 double Polygon::sum_of_levels(const Vec3& frame_p, std::array<double, 3>* gradient) const {
   double f = 0.0;
   if (gradient != nullptr) *gradient = {};
-  for (const auto& [coefficient, level] : levels_) {
+  for (const Level& level : levels_) {
+    const double coefficient = level.coefficient;
     const PolygonInput<double> input = closed_form_input(level);
     if (gradient == nullptr) {
       f += coefficient * polygon_f(input, to_array(frame_p));
@@ -339,10 +343,14 @@ double Polygon::restore_value(double f, const char* function, const Vec3& p) con
   // Inverse and Cauchy fields are positive; only a finite-support one (compact,
   // soft, wyvill) can be 0
   // (grazing its support).
+  double world;
+  if (restore_value_common(f, factors_.value, world)) return world;  // frame_.restore_value's common case
   return frame_.restore_value(f, value_power_, std::isfinite(support_radius_), function, p);
 }
 
 Vec3 Polygon::restore_gradient(const std::array<double, 3>& g, const char* function, const Vec3& p) const {
+  Vec3 world;
+  if (restore_gradient_common(to_vec3(g), factors_.gradient, world)) return world;  // its common case
   return frame_.restore_gradient(to_vec3(g), value_power_ - 1, std::isfinite(support_radius_), function, p);
 }
 
@@ -365,7 +373,7 @@ Vec3 Polygon::gradient(const Vec3& p) const {
     case Case::call_closed_form: break;
   }
   const std::array<double, 3> g = detail::evaluate_converged("polygon_grad", p, [&] {
-    if (levels_.size() == 1) return polygon_grad(closed_form_input(levels_.front().second), to_array(q));
+    if (levels_.size() == 1) return polygon_grad(closed_form_input(levels_.front()), to_array(q));
     std::array<double, 3> sum{};
     sum_of_levels(q, &sum);
     return sum;

@@ -80,6 +80,7 @@ ScalisTriangle::ScalisTriangle(const std::array<Vec3, 3>& vertices, const std::a
   double diameter = 0.0;
   for (int k = 0; k < 3; ++k) diameter = std::max(diameter, scale_safe_norm(vertices[(k + 1) % 3] - vertices[k]));
   frame_ = ScaledFrame(diameter);
+  factors_ = frame_.factors(0);
   for (int k = 0; k < 3; ++k) {
     local_vertices_[k] = frame_.point(vertices[k]);
     local_radii_[k] = frame_.length(radii[k]);
@@ -159,7 +160,8 @@ double ScalisTriangle::numerical(const Vec3& p, const Vec3& frame_p, Vec3* grad)
 
 Vec3 ScalisTriangle::frame_point(const Vec3& p) const {
   detail::require_finite_query_point(p);
-  const Vec3 frame_p = frame_.point(p);
+  // One product by 2^−e where that is a normal double: frame_.point's own fast path.
+  const Vec3 frame_p = factors_.to_frame != 0.0 ? Vec3(p * factors_.to_frame) : frame_.point(p);
   if (!frame_p.allFinite()) {
     throw EvaluationError(fmt::format("P = {} is too far from the SCALIS triangle (more than ~2^1000 times its "
                                       "diameter from the origin): the field is outside the range of double precision",
@@ -173,8 +175,11 @@ FieldSample ScalisTriangle::restore(double F, const Vec3* grad, const Vec3& p) c
   const char* what = uses_closed_form() ? "the constant-radius SCALIS triangle" : "the SCALIS triangle";
   const double scale = iso_ / normalisation_;
   FieldSample sample;
-  sample.value = frame_.restore_value(scale * F, 0, may_vanish_, what, p);
-  if (grad != nullptr) sample.gradient = frame_.restore_gradient(scale * *grad, -1, may_vanish_, what, p);
+  // frame_.restore_value's and restore_gradient's common cases first, with the factors computed once.
+  if (!restore_value_common(scale * F, factors_.value, sample.value))
+    sample.value = frame_.restore_value(scale * F, 0, may_vanish_, what, p);
+  if (grad != nullptr && !restore_gradient_common(scale * *grad, factors_.gradient, sample.gradient))
+    sample.gradient = frame_.restore_gradient(scale * *grad, -1, may_vanish_, what, p);
   return sample;
 }
 

@@ -89,6 +89,10 @@ namespace skelconv {
 // and code that asks for the closed forms directly include it.
 template <class T>
 struct PolygonInput;
+namespace generated {
+template <class T>
+struct PolygonEdgeKernel;
+}
 
 class Polygon {
  public:
@@ -148,8 +152,9 @@ class Polygon {
   /// Finite support: the ball of radius R around P misses the closed polygon (P in the frame).
   bool support_misses_polygon(const Vec3& frame_p) const;
   /// The closed forms' view of this polygon, in the frame (spans
-  /// vertex_arrays_), with the generated kernel `level` (one of levels_).
-  PolygonInput<double> closed_form_input(const KernelSpec& level) const;
+  /// vertex_arrays_), with the generated kernel of `level` (one of levels_).
+  struct Level;
+  PolygonInput<double> closed_form_input(const Level& level) const;
   /// Σ_j c_j × closed form j at P in the frame (a family given as compact
   /// levels, or one level of weight 1): f', and ∇f' into `gradient` when not null.
   double sum_of_levels(const Vec3& frame_p, std::array<double, 3>* gradient) const;
@@ -164,6 +169,9 @@ class Polygon {
   ScaledFrame frame_;
   /// f has units length^value_power_: 2 − i (inverse) or 2.
   int value_power_ = 2;
+  /// frame_'s powers of two for value_power_, computed once: prepare and
+  /// the restore functions run at every evaluation.
+  FrameFactors factors_;
   std::vector<std::array<double, 3>> vertex_arrays_;  ///< vertices_ in the frame, as the closed forms take them
   Vec3 normal_ = Vec3::UnitZ();
   double area_ = 0.0;
@@ -171,7 +179,14 @@ class Polygon {
   /// The generated kernels whose weighted sum is the field: {1, kernel_} for
   /// the families of the generated table, {c_j, k_R^(i_j)} for a trait with
   /// compact_levels (soft, wyvill). Their s and R in the frame (frame_).
-  std::vector<std::pair<double, KernelSpec>> levels_;
+  struct Level {
+    double coefficient = 1.0;
+    KernelSpec kernel;
+    /// Its generated edge kernels, looked up once here rather than at every
+    /// point (a static table: the pointer survives copies of the Polygon).
+    const generated::PolygonEdgeKernel<double>* edge_kernel = nullptr;
+  };
+  std::vector<Level> levels_;
   double support_radius_ = 0.0;  ///< from the trait, world units: K = 0 beyond (+inf: none)
   /// Finite support only: support_radius_ in the frame, and each edge
   /// vertex_arrays_[k] → [k + 1] with its squared length (support_misses_polygon).

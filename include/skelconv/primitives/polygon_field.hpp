@@ -62,7 +62,22 @@ struct PolygonInput {
   int degree = 3;  ///< i of docs/mathematics.md §1
   T s = T(1);      ///< Cauchy sharpness (cauchy only)
   T R = T(1);      ///< support radius (compact only)
+  /// The generated kernel of (family, degree), for a caller that evaluates
+  /// one polygon at many points: looked up once (polygon_edge_kernel)
+  /// rather than at every point. Null: polygon_evaluate looks it up.
+  const generated::PolygonEdgeKernel<T>* edge_kernel = nullptr;
 };
+
+/// The generated edge kernel of (family, degree); throws
+/// std::invalid_argument when the table has none.
+template <class T>
+const generated::PolygonEdgeKernel<T>& polygon_edge_kernel(KernelFamily family, int degree) {
+  const auto* kernel = generated::find_polygon_edge_kernel<T>(family, degree);
+  if (kernel == nullptr)
+    throw std::invalid_argument("polygon: no generated kernel for " + std::string(family_name(family)) + " degree " +
+                                std::to_string(degree));
+  return *kernel;
+}
 
 /// The degrees the generated table offers for polygons, ascending
 /// (the generator's defaults: inverse 3…12, cauchy 3…12, compact 4, 6, …, 12).
@@ -120,10 +135,8 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
                    std::vector<T>* edge_fields = nullptr) {
   using std::abs;
   using std::sqrt;
-  const auto* kernel = generated::find_polygon_edge_kernel<T>(poly.family, poly.degree);
-  if (kernel == nullptr)
-    throw std::invalid_argument("polygon: no generated kernel for " + std::string(family_name(poly.family)) +
-                                " degree " + std::to_string(poly.degree));
+  const generated::PolygonEdgeKernel<T>& kernel =
+      poly.edge_kernel != nullptr ? *poly.edge_kernel : polygon_edge_kernel<T>(poly.family, poly.degree);
   const PolygonKernelForm<T> form = polygon_kernel_form(poly);
   const auto& n = poly.normal;
   const auto& v = poly.vertices;
@@ -156,7 +169,7 @@ T polygon_evaluate(const PolygonInput<T>& poly, const std::array<T, 3>& p, bool 
   if (compact && !(abs(z) < poly.R)) return T(0);  // the support ball misses the plane
   const T disc_radius = compact ? sqrt((poly.R - abs(z)) * (poly.R + abs(z))) : T(0);
 
-  auto edge_function = want_f ? (grad ? kernel->f_and_grad : kernel->f) : kernel->grad;
+  auto edge_function = want_f ? (grad ? kernel.f_and_grad : kernel.f) : kernel.grad;
   T theta_sum = 0, theta_in_sum = 0, S_f = 0, S_g = 0;
   bool on_boundary = false;
   std::vector<PolygonEdgeTerms<T>> all_terms;

@@ -176,6 +176,9 @@ class ScalisTriangle {
   /// The triangle's frame (skelconv/detail/scaled_frame.hpp: the diameter scaled
   /// into [1, 2)), and the vertices and radii in it.
   ScaledFrame frame_;
+  /// frame_'s powers of two (F is scale invariant: power 0), computed once:
+  /// frame_point and restore run at every evaluation.
+  FrameFactors factors_;
   std::array<Vec3, 3> local_vertices_;
   std::array<double, 3> local_radii_{};
   /// Constant radius: the triangle as a polygon with the classical kernel
