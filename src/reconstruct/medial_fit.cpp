@@ -289,16 +289,28 @@ NormalEquations normal_equations(const std::vector<WeightedPoint>& points, const
 /// The step: (JᵀWJ + λ (diag JᵀWJ + μ)) Δθ = −JᵀWδ. Each radius step is
 /// clamped to [−r/2, r] (radii stay positive) and to end at min_radius or
 /// above, each centre step to a length of r/2 and to end within the
-/// sphere's starting ball (`start`).
+/// sphere's starting ball (`start`). The spheres `held` (one flag per
+/// sphere, or empty) do not move: their unknowns are taken out of the
+/// equations, so the others' step is the best one with them fixed.
 std::vector<double> joint_step(const MedialMesh& mesh, const NormalEquations& equations, double lambda,
-                               double min_radius, const std::vector<Vec4>& start) {
+                               double min_radius, const std::vector<Vec4>& start,
+                               const std::vector<std::uint8_t>& held) {
   const Eigen::Index n = Eigen::Index(per_sphere * mesh.spheres.size());
   Eigen::SparseMatrix<double> normal = equations.normal;
-  for (Eigen::Index i = 0; i < n; ++i) normal.coeffRef(i, i) += lambda * (equations.diagonal[i] + equations.floor);
+  Eigen::VectorXd gradient = equations.gradient;
+  const auto fixed = [&held](Eigen::Index unknown) {
+    return !held.empty() && held[std::size_t(unknown) / per_sphere] != 0;
+  };
+  if (!held.empty()) {
+    normal.prune([&fixed](Eigen::Index row, Eigen::Index column, double) { return !fixed(row) && !fixed(column); });
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (fixed(i)) normal.coeffRef(i, i) = 1.0, gradient[i] = 0.0;
+  }
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (!fixed(i)) normal.coeffRef(i, i) += lambda * (equations.diagonal[i] + equations.floor);
   const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
-  const Eigen::VectorXd solution = solver.info() == Eigen::Success
-                                       ? Eigen::VectorXd(solver.solve(-equations.gradient))
-                                       : Eigen::VectorXd::Zero(n);
+  const Eigen::VectorXd solution =
+      solver.info() == Eigen::Success ? Eigen::VectorXd(solver.solve(-gradient)) : Eigen::VectorXd::Zero(n);
   std::vector<double> step(std::size_t(n), 0.0);
   for (std::size_t i = 0; i < mesh.spheres.size(); ++i) {
     const double radius = mesh.spheres[i].w();
@@ -311,6 +323,8 @@ std::vector<double> joint_step(const MedialMesh& mesh, const NormalEquations& eq
     for (std::size_t c = 0; c < 3; ++c) step[per_sphere * i + c] = move[Eigen::Index(c)];
     if (std::isfinite(solution[at + 3]))
       step[per_sphere * i + 3] = std::clamp(solution[at + 3], std::max(-0.5 * radius, min_radius - radius), radius);
+    if (fixed(at))
+      for (std::size_t c = 0; c < per_sphere; ++c) step[per_sphere * i + c] = 0.0;
   }
   return step;
 }
@@ -353,12 +367,94 @@ struct Rounds {
 
 /// A step must also leave the topology error (`error`, when set) at most
 /// `allowed`, and at most `checks_left` steps are tested; the stage stops
-/// when none is left.
+/// when none is left. A step that fails is taken without the spheres whose
+/// move fails it, where localize_step finds them within `localize_left`
+/// more meshings; those spheres are `held` (one flag per sphere) where they
+/// are for the rest of the fit.
 struct Guard {
   TopologyError error;
   long long allowed = 0;
   int checks_left = 0;
+  int localize_left = 0;
+  std::size_t hold_group = 1;
+  std::vector<std::uint8_t> held;
 };
+
+/// `mesh` with `step` taken by the spheres `moved` (one flag per sphere)
+/// and the radius bound applied (limit_radius_slope).
+MedialMesh stepped(const MedialMesh& mesh, const std::vector<double>& step, const std::vector<std::uint8_t>& moved,
+                   double max_radius_slope, const Clearance& clearance) {
+  MedialMesh trial = mesh;
+  for (std::size_t i = 0; i < trial.spheres.size(); ++i)
+    if (moved[i])
+      for (std::size_t c = 0; c < per_sphere; ++c) trial.spheres[i][Eigen::Index(c)] += step[per_sphere * i + c];
+  limit_radius_slope(trial, max_radius_slope, clearance);
+  return trial;
+}
+
+/// A step the guard refused, taken in part: the spheres it moves, split in
+/// two by the median of their centres along the axis where they spread
+/// widest, each half tried on top of what passed so far, a failing half
+/// split again, down to groups of guard.hold_group spheres, which are held
+/// (guard.held). A topology defect opens between a few neighbouring spheres,
+/// so one defect costs one or two meshings per halving. Where the first
+/// half passes, the second fails without a test (together they are the step
+/// that failed). Returns the step taken by the spheres that passed (the
+/// last mesh tested that passed), or nothing where none did (then nothing
+/// more is held). Within
+/// guard.localize_left meshings: the spheres not tried by then stay where
+/// they are for this step.
+std::optional<MedialMesh> localize_step(const MedialMesh& mesh, const std::vector<double>& step, Guard& guard,
+                                        double max_radius_slope, const Clearance& clearance) {
+  std::vector<std::uint8_t> accepted(mesh.spheres.size(), 0);
+  std::optional<MedialMesh> passing;
+  const auto visit = [&](const auto& self, std::vector<std::size_t> group, bool fails) -> void {
+    if (group.empty()) return;
+    if (!fails) {
+      if (guard.localize_left <= 0) return;
+      --guard.localize_left;
+      std::vector<std::uint8_t> moved = accepted;
+      for (const std::size_t i : group) moved[i] = 1;
+      MedialMesh trial = stepped(mesh, step, moved, max_radius_slope, clearance);
+      if (guard.error(trial) <= guard.allowed) {
+        accepted = std::move(moved), passing = std::move(trial);
+        return;
+      }
+    }
+    if (group.size() <= guard.hold_group) {
+      for (const std::size_t i : group) guard.held[i] = 1;
+      return;
+    }
+    Vec3 lo = mesh.spheres[group.front()].head<3>(), hi = lo;
+    for (const std::size_t i : group)
+      lo = lo.cwiseMin(mesh.spheres[i].head<3>()), hi = hi.cwiseMax(mesh.spheres[i].head<3>());
+    Eigen::Index axis = 0;
+    (hi - lo).maxCoeff(&axis);
+    const auto half = group.begin() + std::ptrdiff_t(group.size() / 2);
+    // Ties by index: the same split on every machine.
+    std::nth_element(group.begin(), half, group.end(), [&](std::size_t a, std::size_t b) {
+      const double ca = mesh.spheres[a][axis], cb = mesh.spheres[b][axis];
+      return ca < cb || (ca == cb && a < b);
+    });
+    const std::vector<std::size_t> first(group.begin(), half), second(half, group.end());
+    const std::size_t before = std::size_t(std::count(accepted.begin(), accepted.end(), 1));
+    self(self, first, false);
+    const bool first_passed = std::size_t(std::count(accepted.begin(), accepted.end(), 1)) == before + first.size();
+    self(self, second, first_passed);
+  };
+  std::vector<std::size_t> moving;
+  for (std::size_t i = 0; i < mesh.spheres.size(); ++i) {
+    bool moves = false;
+    for (std::size_t c = 0; c < per_sphere; ++c) moves = moves || step[per_sphere * i + c] != 0.0;
+    if (moves && !guard.held[i]) moving.push_back(i);
+  }
+  const std::vector<std::uint8_t> held_before = guard.held;
+  visit(visit, moving, true);
+  // Where no part of the step passed, nothing is held: the step is refused
+  // as before, and a smaller one (more damping) may pass whole.
+  if (!passing) guard.held = held_before;
+  return passing;
+}
 
 /// Runs `stage` from `now` (and `mesh`, which it describes); the objective
 /// before (unless `values` holds it already) and after each round taken
@@ -376,20 +472,34 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
                          Eigen::Index(per_sphere * mesh.spheres.size()));
     bool better = false;
     for (int attempt = 0; attempt < o.damping_attempts && !better; ++attempt, lambda *= 10.0) {
-      const std::vector<double> step = joint_step(mesh, equations, lambda, o.min_radius, start);
-      MedialMesh trial = mesh;
-      for (std::size_t i = 0; i < trial.spheres.size(); ++i)
-        for (std::size_t c = 0; c < per_sphere; ++c) trial.spheres[i][Eigen::Index(c)] += step[per_sphere * i + c];
-      limit_radius_slope(trial, o.max_radius_slope, clearance);
+      const std::vector<double> step = joint_step(mesh, equations, lambda, o.min_radius, start, guard.held);
+      MedialMesh trial =
+          stepped(mesh, step, std::vector<std::uint8_t>(mesh.spheres.size(), 1), o.max_radius_slope, clearance);
       Evaluation next = evaluate(trial, points, field_of, stage.newton_steps);
-      const double next_value = stage.objective(next);
+      double next_value = stage.objective(next);
       if (next_value < value && next.rms <= stage.rms_limit) {
         if (guard.error) {
           if (guard.checks_left-- <= 0) {
             if (progress) progress(fmt::format("medial fit, {}, round {}: topology tests spent; stopped", stage.name, round));
             return;
           }
-          if (guard.error(trial) > guard.allowed) continue;
+          if (guard.error(trial) > guard.allowed) {
+            // The step without the spheres that take the topology farther.
+            const std::size_t held = std::size_t(std::count(guard.held.begin(), guard.held.end(), 1));
+            const int meshings = guard.localize_left;
+            std::optional<MedialMesh> part = localize_step(mesh, step, guard, o.max_radius_slope, clearance);
+            const std::size_t now_held = std::size_t(std::count(guard.held.begin(), guard.held.end(), 1));
+            if (progress && meshings > 0)
+              progress(fmt::format("medial fit, {}, round {}: the step takes the topology farther; {} more spheres "
+                                   "held ({} in all), {} the rest of it ({} meshings)",
+                                   stage.name, round, now_held - held, now_held, part ? "taking" : "not taking",
+                                   meshings - guard.localize_left));
+            if (!part) continue;
+            Evaluation partial = evaluate(*part, points, field_of, stage.newton_steps);
+            const double partial_value = stage.objective(partial);
+            if (!(partial_value < value && partial.rms <= stage.rms_limit)) continue;
+            trial = std::move(*part), next = std::move(partial), next_value = partial_value;
+          }
         }
         value = next_value, better = true;
         mesh = std::move(trial), now = std::move(next);
@@ -587,7 +697,8 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
         progress(fmt::format("medial fit: round {} of {} takes the topology farther from the input's than round "
                              "{}; resumed after round {} (RMS distance {:.4g}) with each step tested",
                              lost, history.size() - 1, kept, kept, now.rms));
-      Guard guard{topology_error, allowed, o.topology_checks};
+      Guard guard{topology_error, allowed, o.topology_checks, o.localize_checks,
+                  std::size_t(std::max(o.hold_group, 1)), std::vector<std::uint8_t>(mesh.spheres.size(), 0)};
       lambda = o.initial_damping;
       run_stages(stage, int(in_stage), guard);
     }

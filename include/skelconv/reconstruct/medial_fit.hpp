@@ -154,6 +154,18 @@ struct MedialFitOptions {
   /// that was not, with each step tested, at most this many tests (each
   /// meshes the skeleton: about 3 s for 500 primitives at diagonal / 120).
   int topology_checks = 10;
+  /// Where a tested step would take the topology farther, the spheres
+  /// whose move does it are found by bisection (the step split in space,
+  /// each half tried, the failing half split again) and held where they
+  /// are for the rest of the fit; the rest of the step is taken. At most
+  /// this many meshings go to finding them over the whole fit (0: a
+  /// failing step is refused whole). 16: about two bisections of 500
+  /// spheres down to hold_group (docs/reconstruction_medial.md, "The fit").
+  int localize_checks = 16;
+  /// The bisection stops at this many spheres and holds them together: a
+  /// hole opens between a few neighbouring spheres (CGAL's lion: a loop of
+  /// three tube edges), and each halving costs a meshing.
+  int hold_group = 4;
 };
 
 struct MedialFitReport {
