@@ -647,18 +647,25 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
   // The points see distances, not topology: a round may pinch a neck, fuse
   // two parts that nearly touch or open a hole through a thin sheet. Where
   // the fitted spheres end farther from the input's topology than the
-  // unfitted ones, the fit goes back to the last round that was not, found
-  // by bisection over the rounds (a topology lost stays lost in the rounds
-  // after, mostly; each test meshes the skeleton once), and resumes from
-  // there with every step tested (a step that goes farther is refused as
-  // one that raises the objective is), within topology_checks tests.
+  // unfitted ones, the fit finds the first round that did, by bisection
+  // over the rounds (a topology lost stays lost in the rounds after,
+  // mostly; each test meshes the skeleton once). That round's step is
+  // taken without the spheres whose move takes the topology farther
+  // (localize_step), which are held where they are, and the fit runs on
+  // from there, its steps untested; its end is tested again, and so on,
+  // within localize_checks meshings for the spheres and repairs times.
+  // Where no part of the step passes, or the repairs are spent, the fit
+  // goes back to the last round that passed and resumes from there with
+  // every step tested (a step that goes farther is refused as one that
+  // raises the objective is, or taken without the spheres that fail it),
+  // within topology_checks tests.
   if (topology_error && history.size() > 1) {
     const auto at_round = [&](std::size_t k) {
       MedialMesh m = mesh;
       m.spheres = history[k];
       return m;
     };
-    const long long final_error = topology_error(mesh);
+    long long final_error = topology_error(mesh);
     long long allowed = final_error;
     std::size_t kept = 0;  // a round whose error is `allowed`
     if (final_error > 0) {
@@ -673,18 +680,16 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
         if (error < final_error) allowed = error, kept = middle;
       }
     }
-    if (final_error > allowed) {
-      std::size_t lost = history.size() - 1;
-      while (lost - kept > 1) {
-        const std::size_t middle = (kept + lost) / 2;
-        (topology_error(at_round(middle)) <= allowed ? kept : lost) = middle;
-      }
-      mesh = at_round(kept);
-      r.rounds_kept = kept;
-      // The stage round `kept` belongs to and the rounds of it kept (the
-      // end of a stage is the start of the next one taken); its values and
-      // the later stages' go back to there.
-      std::size_t stage = 0, in_stage = kept;
+    Guard guard{topology_error, allowed, o.topology_checks, o.localize_checks,
+                std::size_t(std::max(o.hold_group, 1)), std::vector<std::uint8_t>(mesh.spheres.size(), 0)};
+    // Goes back to round `kept`: the stage it belongs to and the rounds of
+    // it kept (the end of a stage is the start of the next one taken); its
+    // values and the later stages' go back to there, and so does the
+    // history.
+    const auto back_to = [&](std::size_t round, std::size_t& stage, std::size_t& in_stage) {
+      mesh = at_round(round);
+      history.resize(round + 1);
+      stage = 0, in_stage = round;
       while (stage + 1 < plan.size() && !plan[stage + 1].values->empty()) {
         const std::size_t taken = plan[stage].values->empty() ? 0 : plan[stage].values->size() - 1;
         if (in_stage < taken) break;
@@ -693,14 +698,52 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
       if (!plan[stage].values->empty()) plan[stage].values->resize(in_stage + 1);
       for (std::size_t i = stage + 1; i < plan.size(); ++i) plan[i].values->clear();
       now = evaluate(mesh, points, field_of, plan[stage].stage.newton_steps);
-      if (progress)
-        progress(fmt::format("medial fit: round {} of {} takes the topology farther from the input's than round "
-                             "{}; resumed after round {} (RMS distance {:.4g}) with each step tested",
-                             lost, history.size() - 1, kept, kept, now.rms));
-      Guard guard{topology_error, allowed, o.topology_checks, o.localize_checks,
-                  std::size_t(std::max(o.hold_group, 1)), std::vector<std::uint8_t>(mesh.spheres.size(), 0)};
+    };
+    for (int repair = 0; final_error > allowed; ++repair) {
+      std::size_t lost = history.size() - 1;
+      while (lost - kept > 1) {
+        const std::size_t middle = (kept + lost) / 2;
+        (topology_error(at_round(middle)) <= allowed ? kept : lost) = middle;
+      }
+      r.rounds_kept = kept;
+      // The step from round `kept` to round `lost`, without the spheres
+      // that take the topology farther.
+      std::vector<double> step(per_sphere * mesh.spheres.size(), 0.0);
+      for (std::size_t i = 0; i < mesh.spheres.size(); ++i)
+        for (std::size_t c = 0; c < per_sphere; ++c)
+          step[per_sphere * i + c] = history[lost][i][Eigen::Index(c)] - history[kept][i][Eigen::Index(c)];
+      const std::size_t held_before = std::size_t(std::count(guard.held.begin(), guard.held.end(), 1));
+      const int meshings = guard.localize_left;
+      std::optional<MedialMesh> part;
+      if (repair < o.topology_repairs)
+        part = localize_step(at_round(kept), step, guard, o.max_radius_slope, clearance);
+      std::size_t stage = 0, in_stage = 0;
+      back_to(kept, stage, in_stage);
       lambda = o.initial_damping;
-      run_stages(stage, int(in_stage), guard);
+      if (!part) {
+        if (progress)
+          progress(fmt::format("medial fit: round {} of {} takes the topology farther from the input's than round "
+                               "{}; resumed after round {} (RMS distance {:.4g}) with each step tested",
+                               lost, lost, kept, kept, now.rms));
+        run_stages(stage, int(in_stage), guard);
+        break;
+      }
+      // Round `kept` again, taken this far: its objective is the partial
+      // step's.
+      mesh = std::move(*part);
+      history.back() = mesh.spheres;
+      now = evaluate(mesh, points, field_of, plan[stage].stage.newton_steps);
+      if (!plan[stage].values->empty()) plan[stage].values->back() = plan[stage].stage.objective(now);
+      const std::size_t held = std::size_t(std::count(guard.held.begin(), guard.held.end(), 1));
+      if (progress)
+        progress(fmt::format("medial fit: round {} takes the topology farther from the input's than round {}; "
+                             "{} spheres held ({} more, {} meshings), the rest of its step taken (RMS distance "
+                             "{:.4g}), the fit resumed untested",
+                             lost, kept, held, held - held_before, meshings - guard.localize_left, now.rms));
+      Guard holding;
+      holding.held = guard.held;
+      run_stages(stage, int(in_stage), holding);
+      final_error = topology_error(mesh);
     }
   }
   if (report != nullptr) *report = r;

@@ -166,6 +166,12 @@ struct MedialFitOptions {
   /// hole opens between a few neighbouring spheres (CGAL's lion: a loop of
   /// three tube edges), and each halving costs a meshing.
   int hold_group = 4;
+  /// How many times at most the fit, its end farther from the input's
+  /// topology, holds the spheres that took it there and runs on untested
+  /// (each time: a bisection over the rounds, the spheres found, the rest
+  /// of the rounds fitted, the end meshed); then it goes back to the last
+  /// round that passed and tests each step.
+  int topology_repairs = 2;
 };
 
 struct MedialFitReport {
