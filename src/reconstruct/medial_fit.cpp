@@ -367,10 +367,8 @@ struct Rounds {
 
 /// A step must also leave the topology error (`error`, when set) at most
 /// `allowed`, and at most `checks_left` steps are tested; the stage stops
-/// when none is left. A step that fails is taken without the spheres whose
-/// move fails it, where localize_step finds them within `localize_left`
-/// more meshings; those spheres are `held` (one flag per sphere) where they
-/// are for the rest of the fit.
+/// when none is left. The spheres `held` (one flag per sphere, or none) do
+/// not move; localize_step finds them within `localize_left` meshings.
 struct Guard {
   TopologyError error;
   long long allowed = 0;
@@ -476,30 +474,14 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
       MedialMesh trial =
           stepped(mesh, step, std::vector<std::uint8_t>(mesh.spheres.size(), 1), o.max_radius_slope, clearance);
       Evaluation next = evaluate(trial, points, field_of, stage.newton_steps);
-      double next_value = stage.objective(next);
+      const double next_value = stage.objective(next);
       if (next_value < value && next.rms <= stage.rms_limit) {
         if (guard.error) {
           if (guard.checks_left-- <= 0) {
             if (progress) progress(fmt::format("medial fit, {}, round {}: topology tests spent; stopped", stage.name, round));
             return;
           }
-          if (guard.error(trial) > guard.allowed) {
-            // The step without the spheres that take the topology farther.
-            const std::size_t held = std::size_t(std::count(guard.held.begin(), guard.held.end(), 1));
-            const int meshings = guard.localize_left;
-            std::optional<MedialMesh> part = localize_step(mesh, step, guard, o.max_radius_slope, clearance);
-            const std::size_t now_held = std::size_t(std::count(guard.held.begin(), guard.held.end(), 1));
-            if (progress && meshings > 0)
-              progress(fmt::format("medial fit, {}, round {}: the step takes the topology farther; {} more spheres "
-                                   "held ({} in all), {} the rest of it ({} meshings)",
-                                   stage.name, round, now_held - held, now_held, part ? "taking" : "not taking",
-                                   meshings - guard.localize_left));
-            if (!part) continue;
-            Evaluation partial = evaluate(*part, points, field_of, stage.newton_steps);
-            const double partial_value = stage.objective(partial);
-            if (!(partial_value < value && partial.rms <= stage.rms_limit)) continue;
-            trial = std::move(*part), next = std::move(partial), next_value = partial_value;
-          }
+          if (guard.error(trial) > guard.allowed) continue;
         }
         value = next_value, better = true;
         mesh = std::move(trial), now = std::move(next);
@@ -699,13 +681,42 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
       for (std::size_t i = stage + 1; i < plan.size(); ++i) plan[i].values->clear();
       now = evaluate(mesh, points, field_of, plan[stage].stage.newton_steps);
     };
+    // Where the repairs fail, the fit goes back to where the first
+    // bisection left it, nothing held, as if no repair had been tried.
+    std::optional<std::size_t> first_kept;
+    std::size_t first_lost = 0, first_last = 0;
+    std::vector<std::vector<Vec4>> first_history;
+    std::vector<std::vector<double>> first_values;
+    const auto fall_back = [&] {
+      kept = *first_kept, history = std::move(first_history);
+      for (std::size_t i = 0; i < plan.size(); ++i) *plan[i].values = std::move(first_values[i]);
+      guard.held.clear();
+      guard.localize_left = 0;
+      r.rounds_kept = kept;
+      std::size_t stage = 0, in_stage = 0;
+      back_to(kept, stage, in_stage);
+      lambda = o.initial_damping;
+      if (progress)
+        progress(fmt::format("medial fit: round {} of {} takes the topology farther from the input's than round "
+                             "{}; resumed after round {} (RMS distance {:.4g}) with each step tested",
+                             first_lost, first_last, kept, kept, now.rms));
+      run_stages(stage, int(in_stage), guard);
+    };
     for (int repair = 0; final_error > allowed; ++repair) {
-      std::size_t lost = history.size() - 1;
+      if (first_kept && (repair >= o.topology_repairs || guard.localize_left <= 0)) {
+        fall_back();
+        break;
+      }
+      const std::size_t last = history.size() - 1;
+      std::size_t lost = last;
       while (lost - kept > 1) {
         const std::size_t middle = (kept + lost) / 2;
         (topology_error(at_round(middle)) <= allowed ? kept : lost) = middle;
       }
-      r.rounds_kept = kept;
+      if (!first_kept) {
+        first_kept = kept, first_lost = lost, first_last = last, first_history = history;
+        for (const Planned& p : plan) first_values.push_back(*p.values);
+      }
       // The step from round `kept` to round `lost`, without the spheres
       // that take the topology farther.
       std::vector<double> step(per_sphere * mesh.spheres.size(), 0.0);
@@ -717,17 +728,14 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
       std::optional<MedialMesh> part;
       if (repair < o.topology_repairs)
         part = localize_step(at_round(kept), step, guard, o.max_radius_slope, clearance);
-      std::size_t stage = 0, in_stage = 0;
-      back_to(kept, stage, in_stage);
-      lambda = o.initial_damping;
       if (!part) {
-        if (progress)
-          progress(fmt::format("medial fit: round {} of {} takes the topology farther from the input's than round "
-                               "{}; resumed after round {} (RMS distance {:.4g}) with each step tested",
-                               lost, lost, kept, kept, now.rms));
-        run_stages(stage, int(in_stage), guard);
+        fall_back();
         break;
       }
+      std::size_t stage = 0, in_stage = 0;
+      lambda = o.initial_damping;
+      r.rounds_kept = kept;
+      back_to(kept, stage, in_stage);
       // Round `kept` again, taken this far: its objective is the partial
       // step's.
       mesh = std::move(*part);
