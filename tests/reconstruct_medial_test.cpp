@@ -6,6 +6,7 @@
 // and a plate, where the fit may only lower its RMS distance.
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <limits>
@@ -622,6 +623,84 @@ TEST(MedialFit, GoesBackToTheMiddleRoundWhereTheUnfittedSpheresAreNoCloser) {
   EXPECT_GT(kept.spheres[0].w(), 1.29);
   ASSERT_TRUE(report.rounds_kept.has_value());
   EXPECT_EQ(*report.rounds_kept, 3u);
+}
+
+// A flat sheet of spheres 1 apart (a grid of 8 × 4 in z = 0, two triangles
+// per square) with one inner square left without its triangles: a hole in
+// the medial mesh, as pruning leaves in a thin wall (CGAL's lion's ear).
+// At the starting radius 0.6 the four sides' fields cover it (its middle is
+// 0.5 from each side); the fit's points, a plate 0.3 thick on either side
+// (none over the hole), pull every radius towards 0.3, where the middle is
+// beyond every support (1.5 r = 0.45): the fit left alone opens a tunnel.
+// The topology error is the meshed surface's against one component of
+// genus 0 (the sheet without its hole). Refusing every step that opens the
+// hole keeps the sheet near its unfitted radii; holding the spheres about
+// the hole lets the far end of the sheet (x ≥ 5, three squares away) reach
+// the points as the fit left alone does, the topology kept.
+TEST(MedialFit, HoldsTheSpheresAboutAHoleAndTakesTheRestOfTheStep) {
+  MedialMesh sheet;
+  constexpr int nx = 8, ny = 4;
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j) sheet.spheres.push_back(Vec4(i, j, 0, 0.6));
+  const auto at = [](int i, int j) { return std::int32_t(i * ny + j); };
+  for (int i = 0; i + 1 < nx; ++i)
+    for (int j = 0; j + 1 < ny; ++j)
+      if (!(i == 1 && j == 1))
+        sheet.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)}),
+            sheet.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+  std::vector<WeightedPoint> points;
+  for (double x = 0.0; x <= nx - 1 + 1e-9; x += 0.25)
+    for (double y = 0.0; y <= ny - 1 + 1e-9; y += 0.25)
+      if (!(x > 1.0 && x < 2.0 && y > 1.0 && y < 2.0))
+        for (const double z : {-0.3, 0.3}) points.push_back({Vec3(x, y, z), 1.0});
+  ReconstructOptions o;
+  const MedialField field_of = written_field(o);
+  TriangleMesh box;  // the mesh's bounding region
+  box.vertices = {Vec3(-1, -1, -1), Vec3(nx, ny, 1)};
+  const double facet = 0.1;
+  const auto topology = [&](const MedialMesh& m) {
+    Stage s;
+    s.name = "medial";
+    s.medial = m;
+    return mesh_topology(mesh_stage_unprojected(box, s, o, facet));
+  };
+  int meshings = 0;
+  const TopologyError error = [&](const MedialMesh& m) {
+    ++meshings;
+    const MeshTopology t = topology(m);
+    return std::llabs((long long)t.components - 1) + std::llabs(2 - t.euler_characteristic) / 2;
+  };
+  ASSERT_EQ(error(sheet), 0) << "the unfitted sheet must cover its hole";
+  MedialFitOptions fit;
+  fit.min_radius = 0.1;
+  fit.fit_centres = false;
+  MedialFitReport report;
+  const MedialMesh free = fit_medial_mesh(sheet, points, {}, field_of, fit, &report);
+  ASSERT_EQ(topology(free).euler_characteristic, 0) << "the fit left alone must open the hole";
+  const auto far_end = [&](const MedialMesh& m) {
+    double sum = 0.0;
+    for (int i = 5; i < nx; ++i)
+      for (int j = 0; j < ny; ++j) sum += m.spheres[std::size_t(at(i, j))].w();
+    return sum / ((nx - 5) * ny);
+  };
+  ASSERT_LT(far_end(free), 0.45);  // from 0.6
+  meshings = 0;
+  const MedialMesh kept = fit_medial_mesh(sheet, points, {}, field_of, fit, &report, {}, error);
+  const MeshTopology t = topology(kept);
+  EXPECT_EQ(t.components, 1u);
+  EXPECT_EQ(t.euler_characteristic, 2);
+  EXPECT_LT(far_end(kept), 0.45) << "the far end's radii must come down as the unguarded fit's do";
+  // The end, the unfitted sheet and the middle round; per repair and once
+  // more, a bisection over at most 64 rounds and the end again; then the
+  // spheres' and the tested steps' budgets.
+  EXPECT_LE(meshings, 3 + (fit.topology_repairs + 1) * (6 + 1) + fit.localize_checks + fit.topology_checks);
+  // Every step that opens the hole refused whole: the far end stays near
+  // its unfitted radius.
+  MedialFitOptions whole = fit;
+  whole.localize_checks = 0;
+  const MedialMesh refused = fit_medial_mesh(sheet, points, {}, field_of, whole, &report, {}, error);
+  EXPECT_EQ(topology(refused).euler_characteristic, 2);
+  EXPECT_GT(far_end(refused), 0.45) << "the case must be one that refusing whole steps gets wrong";
 }
 
 // --- The radii kept as a medial axis's (medial_slope.hpp).

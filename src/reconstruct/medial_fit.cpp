@@ -289,16 +289,28 @@ NormalEquations normal_equations(const std::vector<WeightedPoint>& points, const
 /// The step: (JᵀWJ + λ (diag JᵀWJ + μ)) Δθ = −JᵀWδ. Each radius step is
 /// clamped to [−r/2, r] (radii stay positive) and to end at min_radius or
 /// above, each centre step to a length of r/2 and to end within the
-/// sphere's starting ball (`start`).
+/// sphere's starting ball (`start`). The spheres `held` (one flag per
+/// sphere, or empty) do not move: their unknowns are taken out of the
+/// equations, so the others' step is the best one with them fixed.
 std::vector<double> joint_step(const MedialMesh& mesh, const NormalEquations& equations, double lambda,
-                               double min_radius, const std::vector<Vec4>& start) {
+                               double min_radius, const std::vector<Vec4>& start,
+                               const std::vector<std::uint8_t>& held) {
   const Eigen::Index n = Eigen::Index(per_sphere * mesh.spheres.size());
   Eigen::SparseMatrix<double> normal = equations.normal;
-  for (Eigen::Index i = 0; i < n; ++i) normal.coeffRef(i, i) += lambda * (equations.diagonal[i] + equations.floor);
+  Eigen::VectorXd gradient = equations.gradient;
+  const auto fixed = [&held](Eigen::Index unknown) {
+    return !held.empty() && held[std::size_t(unknown) / per_sphere] != 0;
+  };
+  if (!held.empty()) {
+    normal.prune([&fixed](Eigen::Index row, Eigen::Index column, double) { return !fixed(row) && !fixed(column); });
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (fixed(i)) normal.coeffRef(i, i) = 1.0, gradient[i] = 0.0;
+  }
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (!fixed(i)) normal.coeffRef(i, i) += lambda * (equations.diagonal[i] + equations.floor);
   const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
-  const Eigen::VectorXd solution = solver.info() == Eigen::Success
-                                       ? Eigen::VectorXd(solver.solve(-equations.gradient))
-                                       : Eigen::VectorXd::Zero(n);
+  const Eigen::VectorXd solution =
+      solver.info() == Eigen::Success ? Eigen::VectorXd(solver.solve(-gradient)) : Eigen::VectorXd::Zero(n);
   std::vector<double> step(std::size_t(n), 0.0);
   for (std::size_t i = 0; i < mesh.spheres.size(); ++i) {
     const double radius = mesh.spheres[i].w();
@@ -311,6 +323,8 @@ std::vector<double> joint_step(const MedialMesh& mesh, const NormalEquations& eq
     for (std::size_t c = 0; c < 3; ++c) step[per_sphere * i + c] = move[Eigen::Index(c)];
     if (std::isfinite(solution[at + 3]))
       step[per_sphere * i + 3] = std::clamp(solution[at + 3], std::max(-0.5 * radius, min_radius - radius), radius);
+    if (fixed(at))
+      for (std::size_t c = 0; c < per_sphere; ++c) step[per_sphere * i + c] = 0.0;
   }
   return step;
 }
@@ -353,12 +367,92 @@ struct Rounds {
 
 /// A step must also leave the topology error (`error`, when set) at most
 /// `allowed`, and at most `checks_left` steps are tested; the stage stops
-/// when none is left.
+/// when none is left. The spheres `held` (one flag per sphere, or none) do
+/// not move; localize_step finds them within `localize_left` meshings.
 struct Guard {
   TopologyError error;
   long long allowed = 0;
   int checks_left = 0;
+  int localize_left = 0;
+  std::size_t hold_group = 1;
+  std::vector<std::uint8_t> held;
 };
+
+/// `mesh` with `step` taken by the spheres `moved` (one flag per sphere)
+/// and the radius bound applied (limit_radius_slope).
+MedialMesh stepped(const MedialMesh& mesh, const std::vector<double>& step, const std::vector<std::uint8_t>& moved,
+                   double max_radius_slope, const Clearance& clearance) {
+  MedialMesh trial = mesh;
+  for (std::size_t i = 0; i < trial.spheres.size(); ++i)
+    if (moved[i])
+      for (std::size_t c = 0; c < per_sphere; ++c) trial.spheres[i][Eigen::Index(c)] += step[per_sphere * i + c];
+  limit_radius_slope(trial, max_radius_slope, clearance);
+  return trial;
+}
+
+/// A step the guard refused, taken in part: the spheres it moves, split in
+/// two by the median of their centres along the axis where they spread
+/// widest, each half tried on top of what passed so far, a failing half
+/// split again, down to groups of guard.hold_group spheres, which are held
+/// (guard.held). A topology defect opens between a few neighbouring spheres,
+/// so one defect costs one or two meshings per halving. Where the first
+/// half passes, the second fails without a test (together they are the step
+/// that failed). Returns the step taken by the spheres that passed (the
+/// last mesh tested that passed), or nothing where none did (then nothing
+/// more is held). Within
+/// guard.localize_left meshings: the spheres not tried by then stay where
+/// they are for this step.
+std::optional<MedialMesh> localize_step(const MedialMesh& mesh, const std::vector<double>& step, Guard& guard,
+                                        double max_radius_slope, const Clearance& clearance) {
+  std::vector<std::uint8_t> accepted(mesh.spheres.size(), 0);
+  std::optional<MedialMesh> passing;
+  const auto visit = [&](const auto& self, std::vector<std::size_t> group, bool fails) -> void {
+    if (group.empty()) return;
+    if (!fails) {
+      if (guard.localize_left <= 0) return;
+      --guard.localize_left;
+      std::vector<std::uint8_t> moved = accepted;
+      for (const std::size_t i : group) moved[i] = 1;
+      MedialMesh trial = stepped(mesh, step, moved, max_radius_slope, clearance);
+      if (guard.error(trial) <= guard.allowed) {
+        accepted = std::move(moved), passing = std::move(trial);
+        return;
+      }
+    }
+    if (group.size() <= guard.hold_group) {
+      for (const std::size_t i : group) guard.held[i] = 1;
+      return;
+    }
+    Vec3 lo = mesh.spheres[group.front()].head<3>(), hi = lo;
+    for (const std::size_t i : group)
+      lo = lo.cwiseMin(mesh.spheres[i].head<3>()), hi = hi.cwiseMax(mesh.spheres[i].head<3>());
+    Eigen::Index axis = 0;
+    (hi - lo).maxCoeff(&axis);
+    const auto half = group.begin() + std::ptrdiff_t(group.size() / 2);
+    // Ties by index: the same split on every machine.
+    std::nth_element(group.begin(), half, group.end(), [&](std::size_t a, std::size_t b) {
+      const double ca = mesh.spheres[a][axis], cb = mesh.spheres[b][axis];
+      return ca < cb || (ca == cb && a < b);
+    });
+    const std::vector<std::size_t> first(group.begin(), half), second(half, group.end());
+    const std::size_t before = std::size_t(std::count(accepted.begin(), accepted.end(), 1));
+    self(self, first, false);
+    const bool first_passed = std::size_t(std::count(accepted.begin(), accepted.end(), 1)) == before + first.size();
+    self(self, second, first_passed);
+  };
+  std::vector<std::size_t> moving;
+  for (std::size_t i = 0; i < mesh.spheres.size(); ++i) {
+    bool moves = false;
+    for (std::size_t c = 0; c < per_sphere; ++c) moves = moves || step[per_sphere * i + c] != 0.0;
+    if (moves && !guard.held[i]) moving.push_back(i);
+  }
+  const std::vector<std::uint8_t> held_before = guard.held;
+  visit(visit, moving, true);
+  // Where no part of the step passed, nothing is held: the step is refused
+  // as before, and a smaller one (more damping) may pass whole.
+  if (!passing) guard.held = held_before;
+  return passing;
+}
 
 /// Runs `stage` from `now` (and `mesh`, which it describes); the objective
 /// before (unless `values` holds it already) and after each round taken
@@ -376,11 +470,9 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
                          Eigen::Index(per_sphere * mesh.spheres.size()));
     bool better = false;
     for (int attempt = 0; attempt < o.damping_attempts && !better; ++attempt, lambda *= 10.0) {
-      const std::vector<double> step = joint_step(mesh, equations, lambda, o.min_radius, start);
-      MedialMesh trial = mesh;
-      for (std::size_t i = 0; i < trial.spheres.size(); ++i)
-        for (std::size_t c = 0; c < per_sphere; ++c) trial.spheres[i][Eigen::Index(c)] += step[per_sphere * i + c];
-      limit_radius_slope(trial, o.max_radius_slope, clearance);
+      const std::vector<double> step = joint_step(mesh, equations, lambda, o.min_radius, start, guard.held);
+      MedialMesh trial =
+          stepped(mesh, step, std::vector<std::uint8_t>(mesh.spheres.size(), 1), o.max_radius_slope, clearance);
       Evaluation next = evaluate(trial, points, field_of, stage.newton_steps);
       const double next_value = stage.objective(next);
       if (next_value < value && next.rms <= stage.rms_limit) {
@@ -542,18 +634,25 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
   // The points see distances, not topology: a round may pinch a neck, fuse
   // two parts that nearly touch or open a hole through a thin sheet. Where
   // the fitted spheres end farther from the input's topology than the
-  // unfitted ones, the fit goes back to the last round that was not, found
-  // by bisection over the rounds (a topology lost stays lost in the rounds
-  // after, mostly; each test meshes the skeleton once), and resumes from
-  // there with every step tested (a step that goes farther is refused as
-  // one that raises the objective is), within topology_checks tests.
+  // unfitted ones, the fit finds the first round that did, by bisection
+  // over the rounds (a topology lost stays lost in the rounds after,
+  // mostly; each test meshes the skeleton once). That round's step is
+  // taken without the spheres whose move takes the topology farther
+  // (localize_step), which are held where they are, and the fit runs on
+  // from there, its steps untested; its end is tested again, and so on,
+  // within localize_checks meshings for the spheres and repairs times.
+  // Where no part of the step passes, or the repairs are spent, the fit
+  // goes back to the last round that passed and resumes from there with
+  // every step tested (a step that goes farther is refused as one that
+  // raises the objective is, or taken without the spheres that fail it),
+  // within topology_checks tests.
   if (topology_error && history.size() > 1) {
     const auto at_round = [&](std::size_t k) {
       MedialMesh m = mesh;
       m.spheres = history[k];
       return m;
     };
-    const long long final_error = topology_error(mesh);
+    long long final_error = topology_error(mesh);
     long long allowed = final_error;
     std::size_t kept = 0;  // a round whose error is `allowed`
     if (final_error > 0) {
@@ -568,18 +667,16 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
         if (error < final_error) allowed = error, kept = middle;
       }
     }
-    if (final_error > allowed) {
-      std::size_t lost = history.size() - 1;
-      while (lost - kept > 1) {
-        const std::size_t middle = (kept + lost) / 2;
-        (topology_error(at_round(middle)) <= allowed ? kept : lost) = middle;
-      }
-      mesh = at_round(kept);
-      r.rounds_kept = kept;
-      // The stage round `kept` belongs to and the rounds of it kept (the
-      // end of a stage is the start of the next one taken); its values and
-      // the later stages' go back to there.
-      std::size_t stage = 0, in_stage = kept;
+    Guard guard{topology_error, allowed, o.topology_checks, o.localize_checks,
+                std::size_t(std::max(o.hold_group, 1)), std::vector<std::uint8_t>(mesh.spheres.size(), 0)};
+    // Goes back to round `kept`: the stage it belongs to and the rounds of
+    // it kept (the end of a stage is the start of the next one taken); its
+    // values and the later stages' go back to there, and so does the
+    // history.
+    const auto back_to = [&](std::size_t round, std::size_t& stage, std::size_t& in_stage) {
+      mesh = at_round(round);
+      history.resize(round + 1);
+      stage = 0, in_stage = round;
       while (stage + 1 < plan.size() && !plan[stage + 1].values->empty()) {
         const std::size_t taken = plan[stage].values->empty() ? 0 : plan[stage].values->size() - 1;
         if (in_stage < taken) break;
@@ -588,13 +685,78 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
       if (!plan[stage].values->empty()) plan[stage].values->resize(in_stage + 1);
       for (std::size_t i = stage + 1; i < plan.size(); ++i) plan[i].values->clear();
       now = evaluate(mesh, points, field_of, plan[stage].stage.newton_steps);
+    };
+    // Where the repairs fail, the fit goes back to where the first
+    // bisection left it, nothing held, as if no repair had been tried.
+    std::optional<std::size_t> first_kept;
+    std::size_t first_lost = 0, first_last = 0;
+    std::vector<std::vector<Vec4>> first_history;
+    std::vector<std::vector<double>> first_values;
+    const auto fall_back = [&] {
+      kept = *first_kept, history = std::move(first_history);
+      for (std::size_t i = 0; i < plan.size(); ++i) *plan[i].values = std::move(first_values[i]);
+      guard.held.clear();
+      guard.localize_left = 0;
+      r.rounds_kept = kept;
+      std::size_t stage = 0, in_stage = 0;
+      back_to(kept, stage, in_stage);
+      lambda = o.initial_damping;
       if (progress)
         progress(fmt::format("medial fit: round {} of {} takes the topology farther from the input's than round "
                              "{}; resumed after round {} (RMS distance {:.4g}) with each step tested",
-                             lost, history.size() - 1, kept, kept, now.rms));
-      Guard guard{topology_error, allowed, o.topology_checks};
-      lambda = o.initial_damping;
+                             first_lost, first_last, kept, kept, now.rms));
       run_stages(stage, int(in_stage), guard);
+    };
+    for (int repair = 0; final_error > allowed; ++repair) {
+      if (first_kept && (repair >= o.topology_repairs || guard.localize_left <= 0)) {
+        fall_back();
+        break;
+      }
+      const std::size_t last = history.size() - 1;
+      std::size_t lost = last;
+      while (lost - kept > 1) {
+        const std::size_t middle = (kept + lost) / 2;
+        (topology_error(at_round(middle)) <= allowed ? kept : lost) = middle;
+      }
+      if (!first_kept) {
+        first_kept = kept, first_lost = lost, first_last = last, first_history = history;
+        for (const Planned& p : plan) first_values.push_back(*p.values);
+      }
+      // The step from round `kept` to round `lost`, without the spheres
+      // that take the topology farther.
+      std::vector<double> step(per_sphere * mesh.spheres.size(), 0.0);
+      for (std::size_t i = 0; i < mesh.spheres.size(); ++i)
+        for (std::size_t c = 0; c < per_sphere; ++c)
+          step[per_sphere * i + c] = history[lost][i][Eigen::Index(c)] - history[kept][i][Eigen::Index(c)];
+      const std::size_t held_before = std::size_t(std::count(guard.held.begin(), guard.held.end(), 1));
+      const int meshings = guard.localize_left;
+      std::optional<MedialMesh> part;
+      if (repair < o.topology_repairs)
+        part = localize_step(at_round(kept), step, guard, o.max_radius_slope, clearance);
+      if (!part) {
+        fall_back();
+        break;
+      }
+      std::size_t stage = 0, in_stage = 0;
+      lambda = o.initial_damping;
+      r.rounds_kept = kept;
+      back_to(kept, stage, in_stage);
+      // Round `kept` again, taken this far: its objective is the partial
+      // step's.
+      mesh = std::move(*part);
+      history.back() = mesh.spheres;
+      now = evaluate(mesh, points, field_of, plan[stage].stage.newton_steps);
+      if (!plan[stage].values->empty()) plan[stage].values->back() = plan[stage].stage.objective(now);
+      const std::size_t held = std::size_t(std::count(guard.held.begin(), guard.held.end(), 1));
+      if (progress)
+        progress(fmt::format("medial fit: round {} takes the topology farther from the input's than round {}; "
+                             "{} spheres held ({} more, {} meshings), the rest of its step taken (RMS distance "
+                             "{:.4g}), the fit resumed untested",
+                             lost, kept, held, held - held_before, meshings - guard.localize_left, now.rms));
+      Guard holding;
+      holding.held = guard.held;
+      run_stages(stage, int(in_stage), holding);
+      final_error = topology_error(mesh);
     }
   }
   if (report != nullptr) *report = r;

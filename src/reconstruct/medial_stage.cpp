@@ -335,8 +335,8 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // The guard needs the topology alone: it meshes without projecting the
   // vertices (mesh_stage_unprojected, the same triangles), about a sixth
   // of a meshing's work less. Each surface it meshes is kept with its
-  // medial mesh (a few megabytes each, at most 2 + log2(rounds) +
-  // topology_checks of them):
+  // medial mesh (a few megabytes each, at most 3 + (topology_repairs + 1)
+  // × (log2(rounds) + 1) + localize_checks + topology_checks of them):
   // where the guard ran, the fit's result is one of them, projected once
   // at the end (project_stage_mesh: mesh_stage's mesh to the bit), and
   // measuring the result (`auto`, the report) then meshes nothing again.

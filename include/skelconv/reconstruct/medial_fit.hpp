@@ -36,9 +36,12 @@
 // diverges there. The skeleton is rebuilt in memory each round (no files).
 // Inside points (optional) add a residual where the reconstruction has
 // left a point of the input's inside outside (a cavity); a topology error
-// (optional) sends the fit back to the last round that did not end farther
-// from the input's topology than it started (or than its middle round,
-// where that was closer), and resumes it from there with each step tested.
+// (optional) finds the first round that ended farther from the input's
+// topology than the fit started (or than its middle round, where that was
+// closer), takes that round's step without the spheres whose move does it
+// (found by bisection in space), holds those where they are and runs on;
+// where that fails, it resumes from the last round that passed with each
+// step tested.
 #pragma once
 
 #include <functional>
@@ -167,10 +170,31 @@ struct MedialFitOptions {
   /// (1 + this) × where the first stage left it.
   double worst_rms_growth = 0.25;
   /// When the fit ends farther from the input's topology than it started
-  /// (fit_medial_mesh's topology_error), it resumes from the last round
-  /// that was not, with each step tested, at most this many tests (each
-  /// meshes the skeleton: about 3 s for 500 primitives at diagonal / 120).
+  /// (fit_medial_mesh's topology_error) and holding spheres (below) does
+  /// not bring it back, it resumes from the last round that was not, with
+  /// each step tested, at most this many tests (each meshes the skeleton:
+  /// about 3 s for 500 primitives at diagonal / 120).
   int topology_checks = 10;
+  /// Where the fit's end is farther from the input's topology, the first
+  /// round that took it there is taken without the spheres whose move does
+  /// it, found by bisection (the round's step split in space, each half
+  /// tried, a failing half split again), and held where they are for the
+  /// rest of the fit. At most this many meshings go to finding them over
+  /// the whole fit (0: none; the fit goes back and tests each step). 16:
+  /// what one search took on CGAL's lion and dragon, 500 spheres, down to
+  /// hold_group (docs/reconstruction_medial.md, "The fit").
+  int localize_checks = 16;
+  /// The bisection stops at this many spheres and holds them together: a
+  /// hole opens between a few neighbouring spheres (CGAL's lion: a loop of
+  /// three tube edges), and each halving costs a meshing.
+  int hold_group = 4;
+  /// How many times at most the fit, its end farther from the input's
+  /// topology, holds the spheres that took it there and runs on untested
+  /// (each time: a bisection over the rounds, the spheres found, the rest
+  /// of the rounds fitted, the end meshed). Where that leaves the end
+  /// farther still, the fit goes back to where the first bisection left it,
+  /// nothing held, and tests each step (topology_checks).
+  int topology_repairs = 2;
 };
 
 struct MedialFitReport {
