@@ -644,8 +644,7 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
   // Where no part of the step passes, or the repairs are spent, the fit
   // goes back to the last round that passed and resumes from there with
   // every step tested (a step that goes farther is refused as one that
-  // raises the objective is, or taken without the spheres that fail it),
-  // within topology_checks tests.
+  // raises the objective is), within topology_checks tests.
   if (topology_error && history.size() > 1) {
     const auto at_round = [&](std::size_t k) {
       MedialMesh m = mesh;
