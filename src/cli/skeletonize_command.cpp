@@ -127,9 +127,12 @@ std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh
                                  r.curve_over_budget > 0 ? std::to_string(r.curve_over_budget) : std::string("null"),
                                  input_topology.euler_characteristic, input_topology.components, input_topology.pinches,
                                  r.medial_seconds, r.stages.back().name);
+  // A stage `auto` already meshed to choose its result carries its
+  // distances whatever result_only says: they cost nothing more.
   for (std::size_t k = 0; k < r.stages.size(); ++k)
     text += (k == 0 ? "\n  " : ",\n  ") +
-            stage_report(r.stages[k], input, options, progress, !result_only || k + 1 == r.stages.size());
+            stage_report(r.stages[k], input, options, progress,
+                         !result_only || k + 1 == r.stages.size() || r.stages[k].measured.has_value());
   text += "]";
   if (options.method != reconstruct::SkeletonMethod::curve) {
     // The medial path's own graph and its fit, round by round (absolute
@@ -207,7 +210,8 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                       "distance to the input, with the Hausdorff and RMS distances and the Euler characteristics");
   command->add_option_function<std::string>(
                "--report-stages", [&options](const std::string& which) { options.report_result_only = which == "result"; },
-               "result (default): mesh and measure the result stage only (the others keep their counts and times); "
+               "result (default): mesh and measure the result stage only (the others keep their counts and times, and the "
+               "distances of a stage --method auto measured to choose); "
                "all: every stage (each a meshing: minutes on a large input)")
       ->check(CLI::IsMember({"all", "result"}));
   command->add_option("--measure-divisions", options.measure_divisions,

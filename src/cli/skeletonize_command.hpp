@@ -32,7 +32,7 @@ struct SkeletonizeOptions {
   std::optional<std::string> report_path;
   std::optional<std::string> report_image_path;  ///< --report-image: a PNG (report_image.hpp)
   /// --report-stages result (the default): mesh and measure the result stage
-  /// only; all: every stage too, each a meshing as long as the result's (a
+  /// only (a stage `auto` measured to choose keeps its distances too); all: every stage too, each a meshing as long as the result's (a
   /// curve stage of CGAL's joint.off took minutes where the whole medial path
   /// took one), which only someone comparing the stages wants to wait for.
   bool report_result_only = true;

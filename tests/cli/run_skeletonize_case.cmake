@@ -16,6 +16,9 @@
 #   ARGS=<options>        more options for skeletonize, separated by spaces (e.g. "--method curve")
 #   DEFAULT_STAGES=ON     run without --report-stages (its default: the result
 #                         only) and check that no other stage carries distances
+#   MEASURED=<stage>      that stage, before the result, carries its distances
+#                         (the stage `--method auto` meshed to choose the result:
+#                         the report reuses its measure)
 #   EXIT=<code>, STDERR=<substring>: a refused input; then neither <prefix>.json
 #                         nor <prefix>_report.json may exist afterwards.
 # The measured numbers are printed, so that `ctest -V` shows them.
@@ -84,6 +87,23 @@ if(DEFAULT_STAGES)
       message(FATAL_ERROR "stage ${stage} was measured without --report-stages; only the result should be\n${run}")
     endif()
   endforeach()
+endif()
+if(DEFINED MEASURED)
+  set(found OFF)
+  math(EXPR before "${last} - 1")
+  foreach(k RANGE ${before})
+    string(JSON stage GET "${json}" stages ${k} name)
+    if(stage STREQUAL MEASURED)
+      string(JSON distance ERROR_VARIABLE absent GET "${json}" stages ${k} hausdorff)
+      if(absent)
+        message(FATAL_ERROR "stage ${stage}, measured by auto to choose the result, has no distances in the report\n${run}")
+      endif()
+      set(found ON)
+    endif()
+  endforeach()
+  if(NOT found)
+    message(FATAL_ERROR "no stage ${MEASURED} before the result\n${run}")
+  endif()
 endif()
 if(DEFINED RESULT AND NOT name STREQUAL RESULT)
   message(FATAL_ERROR "expected the result ${RESULT}, got ${name}\n${run}")
