@@ -378,8 +378,8 @@ TEST(ScalisTriangleValues, VaryingRadiusIsAdditive) {
 
 TEST(ScalisTriangleValues, RandomPointsAreCertifiedAndAdditive) {
   // Points all around, the compact support cutting the triangle in every
-  // way (grazing rays, where q = σ²τ² − |PQ|² is pure rounding, made
-  // earlier versions give up).
+  // way (grazing rays, where q = σ²τ² − |PQ|² is pure rounding: a solver
+  // that trusts q's sign gives up there).
   std::mt19937 random(5);
   std::uniform_real_distribution<double> coordinate(-1.0, 3.0);
   std::vector<Vec3> points;

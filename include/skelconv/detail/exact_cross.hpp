@@ -5,8 +5,8 @@
 // and in plain arithmetic each difference B − A, P − A already rounds by
 // ε|AB|, ε|AP|: the cross product then carries an absolute error ~ε|AB||AP|,
 // i.e. a relative error ε / sin∠(AB, AP). D = |AB × AP|² (docs/mathematics.md §2) enters
-// every closed form near the line, so f lost up to 1e-10 at 1e-6 |AB| from
-// the line (verify/baselines/sweep_default.json, before this header).
+// every closed form near the line, so in plain arithmetic f loses up to 1e-10
+// at 1e-6 |AB| from the line (measured on the verifier's default sweep).
 //
 // The generated kernels (codegen/segment_program_builder.hpp) compute the
 // plain cross product first and call `segment_exact_cross` only where
