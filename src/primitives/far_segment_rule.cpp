@@ -18,11 +18,6 @@ namespace skelconv {
 // Named, so that nothing here meets another file's names in a unity build.
 namespace detail::far_rule {
 
-/// The n-node Gauss–Legendre rule on [0, 1] (weights summing to 1).
-struct Rule {
-  std::array<double, FarSegmentRule::max_nodes> t{}, g{};
-};
-
 namespace {
 
 constexpr int max_nodes = FarSegmentRule::max_nodes;
@@ -240,6 +235,9 @@ double half_power(double x, int i) {
 }
 
 }  // namespace
+
+const Rule& gauss_legendre_rule(int n) { return rules()[std::size_t(n)]; }
+
 }  // namespace detail::far_rule
 
 std::optional<FarSegmentRule> FarSegmentRule::make(const Vec3& a, const Vec3& b, int degree, double s,
