@@ -181,7 +181,9 @@ void FarRuleBatch::terms_impl(const Vec3& p, std::size_t first, const std::uint8
   // Each group's members as the bits of one word, found 16 segments at a
   // time, then read off in order: no counter in memory that consecutive
   // segments of one group would increment one after the other.
-  constexpr std::size_t groups = FarSegmentRule::max_nodes / 2 + 1;
+  // 0 (exact), 2, 4, …, the longest rule of the kind.
+  constexpr std::size_t groups =
+      (Scalis ? FarSegmentRule::max_scalis_nodes : FarSegmentRule::max_classical_nodes) / 2 + 1;
   static_assert(chunk == 64, "one bit of a 64-bit word per segment of a chunk");
   alignas(16) std::array<std::uint8_t, chunk> padded;
   padded.fill(0xff);  // no n: past the list's end
@@ -281,14 +283,17 @@ void FarRuleBatch::terms_impl(const Vec3& p, std::size_t first, const std::uint8
         gradient_y = _mm_mul_pd(factor, _mm_add_pd(g_y_even, g_y_odd));
         gradient_z = _mm_mul_pd(factor, _mm_add_pd(g_z_even, g_z_odd));
       }
-      const auto store = [&](std::size_t at, double f_value, const Vec3& gradient) {
+      const auto store = [&](std::size_t at, double f_value, double x, double y, double z) {
         bool usable = f_value >= std::numeric_limits<double>::min() && f_value < std::numeric_limits<double>::infinity();
-        if (Gradient) usable = usable && gradient.allFinite();
+        if (Gradient) usable = usable && std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
         out.exact[at] = !usable;
-        out.sample[at] = {f_value, gradient};
+        out.value[at] = f_value;
+        out.gradient_x[at] = x;
+        out.gradient_y[at] = y;
+        out.gradient_z[at] = z;
       };
-      store(j, low(value), Vec3(low(gradient_x), low(gradient_y), low(gradient_z)));
-      if (j1 != j) store(j1, high(value), Vec3(high(gradient_x), high(gradient_y), high(gradient_z)));
+      store(j, low(value), low(gradient_x), low(gradient_y), low(gradient_z));
+      if (j1 != j) store(j1, high(value), high(gradient_x), high(gradient_y), high(gradient_z));
     }
   }
 }

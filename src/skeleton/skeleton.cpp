@@ -213,17 +213,20 @@ void add_segments_batched(const std::vector<Primitive>& primitives, const std::v
       for (std::size_t j = 0; j < terms.size; ++j) {
         if (!terms.exact[j]) continue;
         position = first + terms.order[j];
-        terms.sample[j] = exact_sample_of_ruled(primitives[position], p, need);
+        const FieldSample term = exact_sample_of_ruled(primitives[position], p, need);
+        terms.value[j] = term.value;
+        terms.gradient_x[j] = term.gradient.x();
+        terms.gradient_y[j] = term.gradient.y();
+        terms.gradient_z[j] = term.gradient.z();
       }
       // No call in this loop: the sums stay in registers (the ABI keeps no
       // floating-point register across a call).
       for (std::size_t j = 0; j < terms.size; ++j) {
-        const FieldSample& term = terms.sample[j];
-        if (need != Need::gradient) value += term.value;  // else the value is not asked for
+        if (need != Need::gradient) value += terms.value[j];  // else the value is not asked for
         if (gradient) {
-          x += term.gradient.x();
-          y += term.gradient.y();
-          z += term.gradient.z();
+          x += terms.gradient_x[j];
+          y += terms.gradient_y[j];
+          z += terms.gradient_z[j];
         }
       }
     }

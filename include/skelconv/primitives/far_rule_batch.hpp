@@ -54,13 +54,16 @@ class FarRuleBatch {
   /// The terms of segments first … first + size − 1 (size ≤ chunk) at P,
   /// in the order they are added: the exact ones (n = 0) first, then by n,
   /// each group in order of position.
+  /// Entries 0 … size − 1 are written before they are read (no
+  /// initialisation: a point of a short list would pay for it).
   struct Terms {
     std::size_t size = 0;
-    std::array<std::uint8_t, chunk> order{};  ///< order[j]: the segment's position − first
-    std::array<FieldSample, chunk> sample{};  ///< sample[j]: segment first + order[j] (with gradient: f and ∇f)
-    /// sample[j] is left to the exact function: n = 0, or the rule's f or
-    /// ∇f not a normal double (FarSegmentRule::evaluate_with's test).
-    std::array<bool, chunk> exact{};
+    std::array<std::uint8_t, chunk> order;  ///< order[j]: the segment's position − first
+    /// f and ∇f (0 without gradient) of segment first + order[j] at [j].
+    std::array<double, chunk> value, gradient_x, gradient_y, gradient_z;
+    /// Term j is left to the exact function: n = 0, or the rule's f or ∇f
+    /// not a normal double (FarSegmentRule::evaluate_with's test).
+    std::array<bool, chunk> exact;
   };
   /// The terms of the chunk from `first` by the rules in nodes[first …]:
   /// f and, with `gradient`, ∇f (else ∇f = 0).
