@@ -10,11 +10,15 @@
 
 #include <boost/container/small_vector.hpp>
 
+#include "far_rule_node.hpp"
+
 namespace skelconv {
 
 // Named, so that nothing here meets another file's names in a unity build.
 namespace detail::far_rule_batch {
 namespace {
+
+using far_rule::lanes_half_power;
 
 /// Segments whose scratch (S at both ends of a ball, or at P) lives on the
 /// stack; longer lists allocate it.
@@ -28,16 +32,6 @@ double high(__m128d v) { return _mm_cvtsd_f64(_mm_unpackhi_pd(v, v)); }
 /// (x² + y²) + z², as Eigen's squaredNorm of a Vec3 adds them.
 __m128d squared_norm(__m128d x, __m128d y, __m128d z) {
   return _mm_add_pd(_mm_add_pd(_mm_mul_pd(x, x), _mm_mul_pd(y, y)), _mm_mul_pd(z, z));
-}
-
-/// x^(I/2) from x, as FarSegmentRule::lower_bound and sum_nodes take it:
-/// from 1, I/2 products, and √x for odd I.
-template <int I>
-[[gnu::always_inline]] inline __m128d half_power(__m128d x) {
-  __m128d result = _mm_set1_pd(1.0);
-  for (int k = 0; k < I / 2; ++k) result = _mm_mul_pd(result, x);
-  if constexpr (I % 2 == 1) result = _mm_mul_pd(result, _mm_sqrt_pd(x));
-  return result;
 }
 
 /// Two segments' values of `v` in lanes 0 and 1 (the same one twice for a
@@ -128,7 +122,7 @@ void FarRuleBatch::choose_impl(const Vec3& p, double radius, double tolerance, s
     } else {  // mean_square
       mean_square = _mm_add_pd(to_centroid, load(spread));
     }
-    const __m128d term = _mm_mul_pd(load(lower_front), half_power<I>(_mm_div_pd(load(q_unit), mean_square)));
+    const __m128d term = _mm_mul_pd(load(lower_front), lanes_half_power<I>(_mm_div_pd(load(q_unit), mean_square)));
     const __m128d roots = _mm_add_pd(_mm_sqrt_pd(q_a), _mm_sqrt_pd(q_b));
     const __m128d scale = load(two_over_length);
     __m128d s_least = _mm_mul_pd(roots, scale);
@@ -174,6 +168,8 @@ void FarRuleBatch::choose_impl(const Vec3& p, double radius, double tolerance, s
 template <int I, bool Scalis, bool Gradient>
 void FarRuleBatch::terms_impl(const Vec3& p, std::size_t first, const std::uint8_t* nodes, Terms& out) const {
   using namespace detail::far_rule_batch;
+  using detail::far_rule::add_node;
+  using detail::far_rule::NodeSegment;
   const std::size_t size = std::min(chunk, rules_.size() - first);
   out.size = size;
   // Grouped by n (0, the exact function, first), in order within a group:
@@ -223,55 +219,25 @@ void FarRuleBatch::terms_impl(const Vec3& p, std::size_t first, const std::uint8
       const __m128d pa_x = _mm_sub_pd(p_x, pair(a_x_at, k0, k1)), pa_y = _mm_sub_pd(p_y, pair(a_y_at, k0, k1)),
                     pa_z = _mm_sub_pd(p_z, pair(a_z_at, k0, k1));
       const __m128d ab_x = pair(ab_x_at, k0, k1), ab_y = pair(ab_y_at, k0, k1), ab_z = pair(ab_z_at, k0, k1);
-      __m128d sharpness = one, c0 = one, c1 = one;
-      if constexpr (Scalis) {
-        c0 = pair(c0_at, k0, k1);
-        c1 = pair(c1_at, k0, k1);
-      } else {
-        sharpness = pair(s_at, k0, k1);
-      }
       __m128d w[FarSegmentRule::Integrand::weight_count] = {};
-      if constexpr (!Scalis) {
+      NodeSegment segment{pa_x, pa_y, pa_z, ab_x, ab_y, ab_z, one, one, one, w, weight_degree};
+      if constexpr (Scalis) {
+        segment.c0 = pair(c0_at, k0, k1);
+        segment.c1 = pair(c1_at, k0, k1);
+      } else {
+        segment.sharpness = pair(s_at, k0, k1);
         for (int d = 0; d <= weight_degree; ++d) w[std::size_t(d)] = pair(w_columns[std::size_t(d)], k0, k1);
       }
       // Each rule's even and odd nodes summed apart (the lanes of sum_nodes).
       __m128d f_even = _mm_setzero_pd(), f_odd = f_even;
       __m128d g_x_even = f_even, g_y_even = f_even, g_z_even = f_even, g_x_odd = f_even, g_y_odd = f_even,
               g_z_odd = f_even;
-      const auto add_node = [&](int node, __m128d& f, __m128d& g_x, __m128d& g_y, __m128d& g_z) {
-        const __m128d t = _mm_set1_pd(rule.t[std::size_t(node)]);
-        const __m128d x = _mm_sub_pd(pa_x, _mm_mul_pd(t, ab_x));
-        const __m128d y = _mm_sub_pd(pa_y, _mm_mul_pd(t, ab_y));
-        const __m128d z = _mm_sub_pd(pa_z, _mm_mul_pd(t, ab_z));
-        const __m128d r2 = squared_norm(x, y, z);
-        __m128d weight = _mm_set1_pd(rule.g[std::size_t(node)]);
-        __m128d inverse;
-        if constexpr (Scalis) {
-          const __m128d c = _mm_add_pd(c0, _mm_mul_pd(t, c1));
-          inverse = _mm_div_pd(one, _mm_add_pd(r2, _mm_mul_pd(c, c)));
-          for (int k = 1; k < I; ++k) weight = _mm_mul_pd(weight, c);
-        } else {
-          inverse = _mm_div_pd(one, _mm_add_pd(one, _mm_mul_pd(sharpness, r2)));
-          if (weight_degree > 0) {
-            __m128d polynomial = w[std::size_t(weight_degree)];
-            for (int k = weight_degree - 1; k >= 0; --k) {
-              polynomial = _mm_add_pd(_mm_mul_pd(polynomial, t), w[std::size_t(k)]);
-            }
-            weight = _mm_mul_pd(weight, polynomial);
-          }
-        }
-        const __m128d term = _mm_mul_pd(weight, half_power<I>(inverse));
-        f = _mm_add_pd(f, term);
-        if constexpr (Gradient) {
-          const __m128d slope = _mm_mul_pd(term, inverse);
-          g_x = _mm_add_pd(g_x, _mm_mul_pd(slope, x));
-          g_y = _mm_add_pd(g_y, _mm_mul_pd(slope, y));
-          g_z = _mm_add_pd(g_z, _mm_mul_pd(slope, z));
-        }
-      };
       for (int node = 0; node < n; node += 2) {  // n even
-        add_node(node, f_even, g_x_even, g_y_even, g_z_even);
-        add_node(node + 1, f_odd, g_x_odd, g_y_odd, g_z_odd);
+        const std::size_t even = std::size_t(node), odd = even + 1;
+        add_node<I, Gradient, Scalis>(_mm_set1_pd(rule.t[even]), _mm_set1_pd(rule.g[even]), segment, f_even, g_x_even,
+                                      g_y_even, g_z_even);
+        add_node<I, Gradient, Scalis>(_mm_set1_pd(rule.t[odd]), _mm_set1_pd(rule.g[odd]), segment, f_odd, g_x_odd,
+                                      g_y_odd, g_z_odd);
       }
       // FarSegmentRule::evaluate_with, per lane.
       const __m128d front = pair(front_at, k0, k1);
