@@ -12,16 +12,12 @@
 #include <vector>
 
 #include "../detail/infinity.hpp"
+#include "far_rule_node.hpp"
 
 namespace skelconv {
 
 // Named, so that nothing here meets another file's names in a unity build.
 namespace detail::far_rule {
-
-/// The n-node Gauss–Legendre rule on [0, 1] (weights summing to 1).
-struct Rule {
-  std::array<double, FarSegmentRule::max_nodes> t{}, g{};
-};
 
 namespace {
 
@@ -138,15 +134,6 @@ const std::vector<FarRuleBin>& table_for(int degree) {
   return tables[std::size_t(degree)];
 }
 
-/// q^(−i/2) from 1/q, on both lanes.
-template <int I>
-[[gnu::always_inline]] inline __m128d negative_half_power(__m128d inverse) {
-  __m128d result = _mm_set1_pd(1.0);
-  for (int k = 0; k < I / 2; ++k) result = _mm_mul_pd(result, inverse);
-  if constexpr (I % 2 == 1) result = _mm_mul_pd(result, _mm_sqrt_pd(inverse));
-  return result;
-}
-
 using Integrand = FarSegmentRule::Integrand;
 
 /// The N-node rule (N even), two nodes at a time in SSE2 (x86-64's
@@ -155,42 +142,17 @@ using Integrand = FarSegmentRule::Integrand;
 /// weight polynomial; Scalis: Q̂ = r² + c², ω̂ = c^(I−1), c = c0 + c1 t.
 template <int I, bool Gradient, int N, bool Scalis>
 NodeSums sum_nodes(const Rule& rule, const Vec3& pa, const Vec3& ab, const Integrand& integrand) {
-  const __m128d one = _mm_set1_pd(1.0), sharpness = _mm_set1_pd(integrand.s);
-  const __m128d c0 = _mm_set1_pd(integrand.c0), c1 = _mm_set1_pd(integrand.c1);
-  const __m128d pa_x = _mm_set1_pd(pa.x()), pa_y = _mm_set1_pd(pa.y()), pa_z = _mm_set1_pd(pa.z());
-  const __m128d ab_x = _mm_set1_pd(ab.x()), ab_y = _mm_set1_pd(ab.y()), ab_z = _mm_set1_pd(ab.z());
-  const int weight_degree = integrand.weight_degree;
+  __m128d w[Integrand::weight_count];
+  for (std::size_t k = 0; k < Integrand::weight_count; ++k) w[k] = _mm_set1_pd(integrand.w[k]);
+  const NodeSegment segment{_mm_set1_pd(pa.x()),         _mm_set1_pd(pa.y()),  _mm_set1_pd(pa.z()),
+                            _mm_set1_pd(ab.x()),         _mm_set1_pd(ab.y()),  _mm_set1_pd(ab.z()),
+                            _mm_set1_pd(integrand.s),    _mm_set1_pd(integrand.c0),
+                            _mm_set1_pd(integrand.c1),   w,
+                            integrand.weight_degree};
   __m128d f = _mm_setzero_pd(), g_x = _mm_setzero_pd(), g_y = _mm_setzero_pd(), g_z = _mm_setzero_pd();
   for (int j = 0; j < N; j += 2) {  // N even, known here: no loop exit to predict
-    const __m128d t = _mm_loadu_pd(&rule.t[std::size_t(j)]);
-    const __m128d x = _mm_sub_pd(pa_x, _mm_mul_pd(t, ab_x));
-    const __m128d y = _mm_sub_pd(pa_y, _mm_mul_pd(t, ab_y));
-    const __m128d z = _mm_sub_pd(pa_z, _mm_mul_pd(t, ab_z));
-    const __m128d r2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(x, x), _mm_mul_pd(y, y)), _mm_mul_pd(z, z));
-    __m128d weight = _mm_loadu_pd(&rule.g[std::size_t(j)]);
-    __m128d inverse;
-    if constexpr (Scalis) {
-      const __m128d c = _mm_add_pd(c0, _mm_mul_pd(t, c1));
-      inverse = _mm_div_pd(one, _mm_add_pd(r2, _mm_mul_pd(c, c)));
-      for (int k = 1; k < I; ++k) weight = _mm_mul_pd(weight, c);
-    } else {
-      inverse = _mm_div_pd(one, _mm_add_pd(one, _mm_mul_pd(sharpness, r2)));
-      if (weight_degree > 0) {
-        __m128d polynomial = _mm_set1_pd(integrand.w[std::size_t(weight_degree)]);
-        for (int k = weight_degree - 1; k >= 0; --k) {
-          polynomial = _mm_add_pd(_mm_mul_pd(polynomial, t), _mm_set1_pd(integrand.w[std::size_t(k)]));
-        }
-        weight = _mm_mul_pd(weight, polynomial);
-      }
-    }
-    const __m128d term = _mm_mul_pd(weight, negative_half_power<I>(inverse));
-    f = _mm_add_pd(f, term);
-    if constexpr (Gradient) {
-      const __m128d slope = _mm_mul_pd(term, inverse);
-      g_x = _mm_add_pd(g_x, _mm_mul_pd(slope, x));
-      g_y = _mm_add_pd(g_y, _mm_mul_pd(slope, y));
-      g_z = _mm_add_pd(g_z, _mm_mul_pd(slope, z));
-    }
+    add_node<I, Gradient, Scalis>(_mm_loadu_pd(&rule.t[std::size_t(j)]), _mm_loadu_pd(&rule.g[std::size_t(j)]),
+                                  segment, f, g_x, g_y, g_z);
   }
   const auto lanes = [](__m128d v) {
     alignas(16) double two[2];
@@ -240,6 +202,9 @@ double half_power(double x, int i) {
 }
 
 }  // namespace
+
+const Rule& gauss_legendre_rule(int n) { return rules()[std::size_t(n)]; }
+
 }  // namespace detail::far_rule
 
 std::optional<FarSegmentRule> FarSegmentRule::make(const Vec3& a, const Vec3& b, int degree, double s,

@@ -187,6 +187,58 @@ void add_segments_within(const std::vector<Primitive>& primitives, const std::ve
   }
 }
 
+/// add_segments_within by the batch of the same rules (FarRuleBatch: their
+/// constants side by side, two segments at a time): the same rules, terms
+/// and additions, hence the same sum, bit for bit.
+template <class Need>
+void add_segments_batched(const std::vector<Primitive>& primitives, const std::vector<std::string>& locations,
+                          const FarRuleBatch& batch, const Vec3& p, Need need, double tolerance,
+                          const std::uint8_t* chosen, FieldSample& total) {
+  const std::size_t count = batch.size();
+  const bool gradient = need != Need::value;
+  boost::container::small_vector<std::uint8_t, 1024> own(chosen ? 0 : count);
+  if (!chosen) {
+    batch.choose(p, tolerance, own.data());
+    chosen = own.data();
+  }
+  static_assert(FarRuleBatch::chunk == far_rule_chunk, "the terms are added in add_segments_within's order");
+  FarRuleBatch::Terms terms;
+  std::size_t position = 0;  // the segment being evaluated
+  // The sums in locals, not through `total`, which the loop would
+  // otherwise load and store at every term; the same additions.
+  double value = total.value, x = total.gradient.x(), y = total.gradient.y(), z = total.gradient.z();
+  try {
+    for (std::size_t first = 0; first < count; first += FarRuleBatch::chunk) {
+      batch.terms(p, first, chosen, gradient, terms);
+      for (std::size_t j = 0; j < terms.size; ++j) {
+        if (!terms.exact[j]) continue;
+        position = first + terms.order[j];
+        const FieldSample term = exact_sample_of_ruled(primitives[position], p, need);
+        terms.value[j] = term.value;
+        terms.gradient_x[j] = term.gradient.x();
+        terms.gradient_y[j] = term.gradient.y();
+        terms.gradient_z[j] = term.gradient.z();
+      }
+      // No call in this loop: the sums stay in registers (the ABI keeps no
+      // floating-point register across a call).
+      for (std::size_t j = 0; j < terms.size; ++j) {
+        if (need != Need::gradient) value += terms.value[j];  // else the value is not asked for
+        if (gradient) {
+          x += terms.gradient_x[j];
+          y += terms.gradient_y[j];
+          z += terms.gradient_z[j];
+        }
+      }
+    }
+    total.value = value;
+    total.gradient = Vec3(x, y, z);
+  } catch (const InputError& error) {
+    throw error.inside(locations[position]);
+  } catch (const EvaluationError& error) {
+    throw error.inside(locations[position]);
+  }
+}
+
 /// add_segments_within for rules of one kind and degree: at [Degree] of the
 /// classical or the SCALIS table (FarSegmentRule's degrees: classical 1–16,
 /// SCALIS 1–10), [0] for a list of mixed kinds or degrees.
@@ -388,6 +440,7 @@ void Skeleton::prepare() const {
       if (!index->far_rules.empty() && std::all_of(index->far_rules.begin(), index->far_rules.end(), same)) {
         index->far_rule_degree = index->far_rules.front().degree();
         index->far_rule_scalis = index->far_rules.front().scalis();
+        index->far_batch = FarRuleBatch::make(index->far_rules);
       }
     }
     cache.index = std::move(index);
@@ -405,6 +458,12 @@ FieldSample Skeleton::evaluate(const Vec3& p, Need need, Acceleration accelerati
   if (!cache.built.load(std::memory_order_acquire)) prepare();
   const detail::SkeletonIndex& built = *cache.index;
   const detail::SkeletonIndex* index = acceleration == Acceleration::indexed ? &built : nullptr;
+  if (tolerance > 0.0 && built.far_batch) {
+    FieldSample total;
+    add_segments_batched(primitives_, primitive_locations_, *built.far_batch, p, need, tolerance, chosen_nodes, total);
+    require_finite_blend(total, need != Need::gradient, need != Need::value, "primitives", p);
+    return total;
+  }
   if (tolerance > 0.0 && !built.far_rules.empty()) {
     static constexpr auto classical = add_segments_within_table<0, Need>(std::make_integer_sequence<int, 16>{});
     static constexpr auto scalis = add_segments_within_table<1, Need>(std::make_integer_sequence<int, 10>{});
@@ -507,7 +566,11 @@ Skeleton::NearbyRules Skeleton::rules_near(const Vec3& centre, double radius, do
   const ChooseNear choose = built.far_rule_scalis ? scalis[std::min(degree, scalis.size() - 1)]
                                                   : classical[std::min(degree, classical.size() - 1)];
   chosen.nodes_.resize(built.far_rules.size());
-  choose(built.far_rules, centre, radius, tolerance, chosen.nodes_.data());
+  if (built.far_batch) {
+    built.far_batch->choose_near(centre, radius, tolerance, chosen.nodes_.data());
+  } else {
+    choose(built.far_rules, centre, radius, tolerance, chosen.nodes_.data());
+  }
   chosen.centre_ = centre;
   chosen.radius_ = radius;
   chosen.index_ = cache_;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "skelconv/field/support_grid.hpp"
+#include "skelconv/primitives/far_rule_batch.hpp"
 #include "skelconv/primitives/far_segment_rule.hpp"
 
 namespace skelconv::detail {
@@ -34,6 +35,10 @@ struct SkeletonIndex {
   /// (Skeleton::evaluate then reads them per rule).
   int far_rule_degree = 0;
   bool far_rule_scalis = false;
+  /// far_rules side by side, chosen and summed many at a time, when they
+  /// are of one kind, degree and weight degree (FarRuleBatch::make); the
+  /// same values as add_segments_within's passes over far_rules.
+  std::optional<FarRuleBatch> far_batch;
   /// The skeleton is a list of primitives of one type: no blend node below
   /// the root, no weight, no grid (Skeleton::evaluate loops over the
   /// primitives without walking the tree).

@@ -62,7 +62,13 @@
 namespace skelconv {
 
 namespace detail::far_rule {
-struct Rule;  ///< the Gauss–Legendre nodes and weights of one n (far_segment_rule.cpp)
+/// The n-node Gauss–Legendre rule on [0, 1] (weights summing to 1), n ≤
+/// FarSegmentRule::max_nodes (far_segment_rule.cpp builds them).
+struct Rule {
+  std::array<double, 20> t{}, g{};
+};
+/// The n-node rule, 1 ≤ n ≤ FarSegmentRule::max_nodes.
+const Rule& gauss_legendre_rule(int n);
 /// Σ_j g_j ω̂(t_j) Q̂_j^(−i/2) and, with the gradient, Σ_j g_j ω̂(t_j)
 /// Q̂_j^(−i/2−1) (P − Γ(t_j)) (FarSegmentRule::front_).
 struct NodeSums {
@@ -88,6 +94,7 @@ class FarSegmentRule {
   static constexpr int max_classical_nodes = 10, max_scalis_nodes = 20;
   static constexpr int max_nodes = std::max(max_classical_nodes, max_scalis_nodes);
   static_assert(max_nodes / 2 == std::tuple_size_v<decltype(FarRuleBin::f)>);
+  static_assert(max_nodes == std::tuple_size_v<decltype(detail::far_rule::Rule::t)>);
   /// The table's bins: 8 per octave of S from 2, the last one open.
   static constexpr int bins_per_octave = 8;  ///< the top 3 bits of S's mantissa
   static constexpr int max_exponent = 30;    ///< S up to 2^31: P ~10^9 |AB| away
@@ -199,23 +206,30 @@ class FarSegmentRule {
     if (!(focal_sum > 2.0 && focal_sum_weight <= std::numeric_limits<double>::max())) return 0;
     double f_allowed = budget * f_factor_;
     if (weight_varies_) f_allowed /= weight_bound<Degree, Scalis>(focal_sum_weight);
-    const double gradient_allowed = f_allowed * gradient_factor_;
+    const int longest = Scalis < 0 ? longest_ : Scalis == 1 ? max_scalis_nodes : max_classical_nodes;
+    return table_nodes(bins_[bin_of(focal_sum)], f_allowed, f_allowed * gradient_factor_, longest);
+  }
+
+  /// The n of nodes_between from the table's bin of S and the bounds
+  /// allowed for f and for ∇f: the shortest even rule that fits both, 0
+  /// past `longest`.
+  static int table_nodes(const FarRuleBin& bound, double f_allowed, double gradient_allowed, int longest) {
     // The bounds decrease with n, so the rules that fit are the even n from
     // some 2 j on, and j − 1 is the number of even rules that do not fit:
-    // counted over the whole table, without a branch (a search's branches
-    // depend on the data). Rules past the
-    // longest of this kind only add to a count that is already past it.
+    // counted, without a branch (a search's branches depend on the data),
+    // over the entries up to the longest rule of this kind rounded up to a
+    // pair of entries (n ≤ 4 ⌈longest/4⌉). Where none of them fits, the
+    // count says n past the longest, as the whole table's count would.
     const __m128d f_limit = _mm_set1_pd(f_allowed), gradient_limit = _mm_set1_pd(gradient_allowed);
-    const FarRuleBin& bound = bins_[bin_of(focal_sum)];
+    const std::size_t entries = std::min(bound.f.size(), std::size_t(4 * ((longest + 3) / 4) / 2));
     int fitting = 0;
-    for (std::size_t k = 0; k < bound.f.size(); k += 2) {
+    for (std::size_t k = 0; k < entries; k += 2) {
       const __m128d fits = _mm_and_pd(_mm_cmple_pd(_mm_loadu_pd(&bound.f[k]), f_limit),
                                       _mm_cmple_pd(_mm_loadu_pd(&bound.gradient[k]), gradient_limit));
       const int mask = _mm_movemask_pd(fits);  // bit k: lane k fits
       fitting += (mask & 1) + (mask >> 1);
     }
-    const int n = 2 * (1 + int(bound.f.size()) - fitting);
-    const int longest = Scalis < 0 ? longest_ : Scalis == 1 ? max_scalis_nodes : max_classical_nodes;
+    const int n = 2 * (1 + int(entries) - fitting);
     return n > longest ? 0 : n;
   }
 
@@ -252,6 +266,9 @@ class FarSegmentRule {
   bool evaluate_nodes(const Vec3& p, int n, bool gradient, FieldSample& out) const;
 
  private:
+  /// Copies these rules' constants side by side and chooses and sums them
+  /// with the same operations (far_rule_batch.hpp).
+  friend class FarRuleBatch;
   FarSegmentRule() = default;
   /// What make and make_scalis share once the integrand is set: the
   /// constants of the bound and of the lower bound, the table; false where

@@ -1,0 +1,310 @@
+// Implementation of skelconv/primitives/far_rule_batch.hpp.
+#include "skelconv/primitives/far_rule_batch.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <emmintrin.h>
+#include <limits>
+#include <utility>
+
+#include <boost/container/small_vector.hpp>
+
+#include "far_rule_node.hpp"
+
+namespace skelconv {
+
+// Named, so that nothing here meets another file's names in a unity build.
+namespace detail::far_rule_batch {
+namespace {
+
+using far_rule::lanes_half_power;
+
+/// Segments whose scratch (S at both ends of a ball, or at P) lives on the
+/// stack; longer lists allocate it.
+constexpr std::size_t stack_segments = 1024;
+using Scratch = boost::container::small_vector<double, stack_segments>;
+
+/// Lane 0, lane 1.
+double low(__m128d v) { return _mm_cvtsd_f64(v); }
+double high(__m128d v) { return _mm_cvtsd_f64(_mm_unpackhi_pd(v, v)); }
+
+/// (x² + y²) + z², as Eigen's squaredNorm of a Vec3 adds them.
+__m128d squared_norm(__m128d x, __m128d y, __m128d z) {
+  return _mm_add_pd(_mm_add_pd(_mm_mul_pd(x, x), _mm_mul_pd(y, y)), _mm_mul_pd(z, z));
+}
+
+/// Two segments' values of `v` in lanes 0 and 1 (the same one twice for a
+/// list's odd last segment).
+__m128d pair(const double* v, std::size_t k0, std::size_t k1) { return _mm_set_pd(v[k1], v[k0]); }
+
+}  // namespace
+}  // namespace detail::far_rule_batch
+
+std::optional<FarRuleBatch> FarRuleBatch::make(std::span<const FarSegmentRule> rules) {
+  if (rules.empty()) return std::nullopt;
+  const FarSegmentRule& first = rules.front();
+  for (const FarSegmentRule& rule : rules) {
+    if (rule.degree_ != first.degree_ || rule.integrand_.scalis != first.integrand_.scalis ||
+        rule.integrand_.weight_degree != first.integrand_.weight_degree) {
+      return std::nullopt;
+    }
+  }
+  FarRuleBatch batch;
+  batch.rules_.assign(rules.begin(), rules.end());
+  batch.degree_ = first.degree_;
+  batch.scalis_ = first.integrand_.scalis;
+  batch.weight_degree_ = first.integrand_.weight_degree;
+  for (const FarSegmentRule& rule : rules) {
+    batch.a_x_.push_back(rule.a_.x());
+    batch.a_y_.push_back(rule.a_.y());
+    batch.a_z_.push_back(rule.a_.z());
+    batch.ab_x_.push_back(rule.ab_.x());
+    batch.ab_y_.push_back(rule.ab_.y());
+    batch.ab_z_.push_back(rule.ab_.z());
+    batch.offset_a_.push_back(rule.offset_a_);
+    batch.offset_b_.push_back(rule.offset_b_);
+    batch.two_over_length_.push_back(rule.two_over_length_);
+    batch.centroid_x_.push_back(rule.centroid_.x());
+    batch.centroid_y_.push_back(rule.centroid_.y());
+    batch.centroid_z_.push_back(rule.centroid_.z());
+    batch.spread_.push_back(rule.spread_);
+    batch.q_unit_.push_back(rule.q_unit_);
+    batch.lower_front_.push_back(rule.lower_front_);
+    batch.s_.push_back(rule.integrand_.s);
+    batch.c0_.push_back(rule.integrand_.c0);
+    batch.c1_.push_back(rule.integrand_.c1);
+    batch.f_factor_.push_back(rule.f_factor_);
+    batch.gradient_factor_.push_back(rule.gradient_factor_);
+    batch.weight_varies_.push_back(rule.weight_varies_);
+    batch.front_.push_back(rule.front_);
+    batch.gradient_front_.push_back(rule.gradient_front_);
+    for (std::size_t j = 0; j < batch.w_.size(); ++j) batch.w_[j].push_back(rule.integrand_.w[j]);
+  }
+  return batch;
+}
+
+template <int I, bool Scalis, bool Ball>
+void FarRuleBatch::choose_impl(const Vec3& p, double radius, double tolerance, std::uint8_t* nodes) const {
+  using namespace detail::far_rule_batch;
+  const std::size_t count = rules_.size();
+  // Per segment, two at a time: Q at the ends, S (at P, or its least and
+  // largest over the ball) and the lower bound, added to f̲ in order.
+  Scratch least(count), largest(Ball ? count : 0);
+  // The columns' addresses in locals: the stores below (bytes) could alias
+  // any member as far as the compiler knows, which would reload them.
+  const double *a_x = a_x_.data(), *a_y = a_y_.data(), *a_z = a_z_.data(), *ab_x = ab_x_.data(),
+               *ab_y = ab_y_.data(), *ab_z = ab_z_.data(), *offset_a = offset_a_.data(), *offset_b = offset_b_.data(),
+               *centroid_x = centroid_x_.data(), *centroid_y = centroid_y_.data(), *centroid_z = centroid_z_.data(),
+               *spread = spread_.data(), *q_unit = q_unit_.data(), *lower_front = lower_front_.data(),
+               *two_over_length = two_over_length_.data(), *f_factor = f_factor_.data(),
+               *gradient_factor = gradient_factor_.data();
+  const std::uint8_t* weight_varies = weight_varies_.data();
+  const FarSegmentRule* rules = rules_.data();
+  const __m128d p_x = _mm_set1_pd(p.x()), p_y = _mm_set1_pd(p.y()), p_z = _mm_set1_pd(p.z());
+  const __m128d twice_radius = _mm_set1_pd(2 * radius), ball_radius = _mm_set1_pd(radius);
+  double lower = 0;
+  // Segments k and k + 1 (`load` reads a column's pair), or the last one
+  // alone (`load` repeats it in both lanes; lane 1 then unused).
+  const auto two = [&](std::size_t k, bool both, auto load) {
+    const __m128d pa_x = _mm_sub_pd(p_x, load(a_x)), pa_y = _mm_sub_pd(p_y, load(a_y)),
+                  pa_z = _mm_sub_pd(p_z, load(a_z));
+    const __m128d pb_x = _mm_sub_pd(pa_x, load(ab_x)), pb_y = _mm_sub_pd(pa_y, load(ab_y)),
+                  pb_z = _mm_sub_pd(pa_z, load(ab_z));
+    const __m128d q_a = _mm_add_pd(squared_norm(pa_x, pa_y, pa_z), load(offset_a));
+    const __m128d q_b = _mm_add_pd(squared_norm(pb_x, pb_y, pb_z), load(offset_b));
+    const __m128d to_centroid = squared_norm(_mm_sub_pd(p_x, load(centroid_x)), _mm_sub_pd(p_y, load(centroid_y)),
+                                             _mm_sub_pd(p_z, load(centroid_z)));
+    __m128d mean_square;
+    if constexpr (Ball) {  // ball_mean_square
+      const __m128d far = _mm_add_pd(_mm_sqrt_pd(to_centroid), ball_radius);
+      mean_square = _mm_add_pd(_mm_mul_pd(far, far), load(spread));
+    } else {  // mean_square
+      mean_square = _mm_add_pd(to_centroid, load(spread));
+    }
+    const __m128d term = _mm_mul_pd(load(lower_front), lanes_half_power<I>(_mm_div_pd(load(q_unit), mean_square)));
+    const __m128d roots = _mm_add_pd(_mm_sqrt_pd(q_a), _mm_sqrt_pd(q_b));
+    const __m128d scale = load(two_over_length);
+    __m128d s_least = _mm_mul_pd(roots, scale);
+    if constexpr (Ball) {  // ball_nodes: S over the ball
+      s_least = _mm_mul_pd(_mm_sub_pd(roots, twice_radius), scale);
+      const __m128d s_largest = _mm_mul_pd(_mm_add_pd(roots, twice_radius), scale);
+      largest[k] = low(s_largest);
+      if (both) largest[k + 1] = high(s_largest);
+    }
+    least[k] = low(s_least);
+    lower += low(term);
+    if (both) {
+      least[k + 1] = high(s_least);
+      lower += high(term);
+    }
+  };
+  std::size_t k = 0;
+  for (; k + 1 < count; k += 2) two(k, true, [k](const double* column) { return _mm_loadu_pd(column + k); });
+  if (k < count) two(k, false, [k](const double* column) { return _mm_set1_pd(column[k]); });
+  const double budget = tolerance * lower / double(count);
+  if (!(budget > 0.0)) {
+    std::fill(nodes, nodes + count, std::uint8_t(0));
+    return;
+  }
+  // FarSegmentRule::nodes_between, its constants read side by side (W, for
+  // a weight that varies, from the rule itself).
+  constexpr int scalis = Scalis ? 1 : 0;
+  constexpr int longest = Scalis ? FarSegmentRule::max_scalis_nodes : FarSegmentRule::max_classical_nodes;
+  const FarRuleBin* bins = rules_.front().bins_;
+  for (std::size_t k = 0; k < count; ++k) {
+    const double focal_sum = least[k], focal_sum_weight = Ball ? largest[k] : least[k];
+    if (!(focal_sum > 2.0 && focal_sum_weight <= std::numeric_limits<double>::max())) {
+      nodes[k] = 0;
+      continue;
+    }
+    double f_allowed = budget * f_factor[k];
+    if (weight_varies[k]) f_allowed /= rules[k].template weight_bound<I, scalis>(focal_sum_weight);
+    nodes[k] = std::uint8_t(FarSegmentRule::table_nodes(bins[FarSegmentRule::bin_of(focal_sum)], f_allowed,
+                                                        f_allowed * gradient_factor[k], longest));
+  }
+}
+
+template <int I, bool Scalis, bool Gradient>
+void FarRuleBatch::terms_impl(const Vec3& p, std::size_t first, const std::uint8_t* nodes, Terms& out) const {
+  using namespace detail::far_rule_batch;
+  using detail::far_rule::add_node;
+  using detail::far_rule::NodeSegment;
+  const std::size_t size = std::min(chunk, rules_.size() - first);
+  out.size = size;
+  // Grouped by n (0, the exact function, first), in order within a group:
+  // the order Skeleton's tolerance mode adds the terms in.
+  // Each group's members as the bits of one word, found 16 segments at a
+  // time, then read off in order: no counter in memory that consecutive
+  // segments of one group would increment one after the other.
+  // 0 (exact), 2, 4, …, the longest rule of the kind.
+  constexpr std::size_t groups =
+      (Scalis ? FarSegmentRule::max_scalis_nodes : FarSegmentRule::max_classical_nodes) / 2 + 1;
+  static_assert(chunk == 64, "one bit of a 64-bit word per segment of a chunk");
+  alignas(16) std::array<std::uint8_t, chunk> padded;
+  padded.fill(0xff);  // no n: past the list's end
+  std::copy(nodes + first, nodes + first + size, padded.begin());
+  std::array<std::size_t, groups + 1> begin{};
+  std::size_t filled = 0;
+  for (std::size_t g = 0; g < groups; ++g) {
+    const __m128i n = _mm_set1_epi8(char(2 * g));
+    std::uint64_t members = 0;
+    for (std::size_t q = 0; q < chunk; q += 16) {
+      const __m128i bytes = _mm_load_si128(reinterpret_cast<const __m128i*>(&padded[q]));
+      members |= std::uint64_t(std::uint16_t(_mm_movemask_epi8(_mm_cmpeq_epi8(bytes, n)))) << q;
+    }
+    begin[g] = filled;
+    for (; members != 0; members &= members - 1) out.order[filled++] = std::uint8_t(std::countr_zero(members));
+  }
+  begin[groups] = filled;
+  for (std::size_t j = 0; j < begin[1]; ++j) out.exact[j] = true;
+  const __m128d p_x = _mm_set1_pd(p.x()), p_y = _mm_set1_pd(p.y()), p_z = _mm_set1_pd(p.z());
+  const __m128d one = _mm_set1_pd(1.0);
+  // The columns' addresses and the weight degree in locals: the stores to
+  // `out` could alias any member as far as the compiler knows.
+  const double *a_x_at = a_x_.data(), *a_y_at = a_y_.data(), *a_z_at = a_z_.data(), *ab_x_at = ab_x_.data(),
+               *ab_y_at = ab_y_.data(), *ab_z_at = ab_z_.data(), *s_at = s_.data(), *c0_at = c0_.data(),
+               *c1_at = c1_.data(), *front_at = front_.data(), *gradient_front_at = gradient_front_.data();
+  std::array<const double*, FarSegmentRule::Integrand::weight_count> w_columns;
+  for (std::size_t d = 0; d < w_columns.size(); ++d) w_columns[d] = w_[d].data();
+  const int weight_degree = weight_degree_;
+  for (std::size_t g = 1; g < groups; ++g) {
+    if (begin[g] == begin[g + 1]) continue;
+    const int n = int(2 * g);
+    const detail::far_rule::Rule& rule = detail::far_rule::gauss_legendre_rule(n);
+    // Two segments of this group at a time, one per lane.
+    for (std::size_t j = begin[g]; j < begin[g + 1]; j += 2) {
+      const std::size_t j1 = std::min(j + 1, begin[g + 1] - 1);
+      const std::size_t k0 = first + out.order[j], k1 = first + out.order[j1];
+      const __m128d pa_x = _mm_sub_pd(p_x, pair(a_x_at, k0, k1)), pa_y = _mm_sub_pd(p_y, pair(a_y_at, k0, k1)),
+                    pa_z = _mm_sub_pd(p_z, pair(a_z_at, k0, k1));
+      const __m128d ab_x = pair(ab_x_at, k0, k1), ab_y = pair(ab_y_at, k0, k1), ab_z = pair(ab_z_at, k0, k1);
+      __m128d w[FarSegmentRule::Integrand::weight_count] = {};
+      NodeSegment segment{pa_x, pa_y, pa_z, ab_x, ab_y, ab_z, one, one, one, w, weight_degree};
+      if constexpr (Scalis) {
+        segment.c0 = pair(c0_at, k0, k1);
+        segment.c1 = pair(c1_at, k0, k1);
+      } else {
+        segment.sharpness = pair(s_at, k0, k1);
+        for (int d = 0; d <= weight_degree; ++d) w[std::size_t(d)] = pair(w_columns[std::size_t(d)], k0, k1);
+      }
+      // Each rule's even and odd nodes summed apart (the lanes of sum_nodes).
+      __m128d f_even = _mm_setzero_pd(), f_odd = f_even;
+      __m128d g_x_even = f_even, g_y_even = f_even, g_z_even = f_even, g_x_odd = f_even, g_y_odd = f_even,
+              g_z_odd = f_even;
+      for (int node = 0; node < n; node += 2) {  // n even
+        const std::size_t even = std::size_t(node), odd = even + 1;
+        add_node<I, Gradient, Scalis>(_mm_set1_pd(rule.t[even]), _mm_set1_pd(rule.g[even]), segment, f_even, g_x_even,
+                                      g_y_even, g_z_even);
+        add_node<I, Gradient, Scalis>(_mm_set1_pd(rule.t[odd]), _mm_set1_pd(rule.g[odd]), segment, f_odd, g_x_odd,
+                                      g_y_odd, g_z_odd);
+      }
+      // FarSegmentRule::evaluate_with, per lane.
+      const __m128d front = pair(front_at, k0, k1);
+      const __m128d value = _mm_mul_pd(front, _mm_add_pd(f_even, f_odd));
+      __m128d gradient_x = _mm_setzero_pd(), gradient_y = gradient_x, gradient_z = gradient_x;
+      if constexpr (Gradient) {
+        const __m128d factor = _mm_mul_pd(pair(gradient_front_at, k0, k1), front);
+        gradient_x = _mm_mul_pd(factor, _mm_add_pd(g_x_even, g_x_odd));
+        gradient_y = _mm_mul_pd(factor, _mm_add_pd(g_y_even, g_y_odd));
+        gradient_z = _mm_mul_pd(factor, _mm_add_pd(g_z_even, g_z_odd));
+      }
+      const auto store = [&](std::size_t at, double f_value, double x, double y, double z) {
+        bool usable = f_value >= std::numeric_limits<double>::min() && f_value < std::numeric_limits<double>::infinity();
+        if (Gradient) usable = usable && std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
+        out.exact[at] = !usable;
+        out.value[at] = f_value;
+        out.gradient_x[at] = x;
+        out.gradient_y[at] = y;
+        out.gradient_z[at] = z;
+      };
+      store(j, low(value), low(gradient_x), low(gradient_y), low(gradient_z));
+      if (j1 != j) store(j1, high(value), high(gradient_x), high(gradient_y), high(gradient_z));
+    }
+  }
+}
+
+namespace {
+
+using ChooseImpl = void (FarRuleBatch::*)(const Vec3&, double, double, std::uint8_t*) const;
+using TermsImpl = void (FarRuleBatch::*)(const Vec3&, std::size_t, const std::uint8_t*, FarRuleBatch::Terms&) const;
+
+}  // namespace
+
+// The passes' instantiations, per kind at [degree] (classical 1–16, SCALIS
+// 1–10: FarSegmentRule's degrees).
+template <bool Scalis, bool Ball, int... I>
+constexpr auto FarRuleBatch::choose_table(std::integer_sequence<int, I...>) {
+  return std::array<ChooseImpl, sizeof...(I) + 1>{nullptr, &FarRuleBatch::choose_impl<I + 1, Scalis, Ball>...};
+}
+template <bool Scalis, bool Gradient, int... I>
+constexpr auto FarRuleBatch::terms_table(std::integer_sequence<int, I...>) {
+  return std::array<TermsImpl, sizeof...(I) + 1>{nullptr, &FarRuleBatch::terms_impl<I + 1, Scalis, Gradient>...};
+}
+
+void FarRuleBatch::choose(const Vec3& p, double tolerance, std::uint8_t* nodes) const {
+  static constexpr auto classical = choose_table<false, false>(std::make_integer_sequence<int, 16>{});
+  static constexpr auto scalis = choose_table<true, false>(std::make_integer_sequence<int, 10>{});
+  (this->*(scalis_ ? scalis[std::size_t(degree_)] : classical[std::size_t(degree_)]))(p, 0.0, tolerance, nodes);
+}
+
+void FarRuleBatch::choose_near(const Vec3& centre, double radius, double tolerance, std::uint8_t* nodes) const {
+  static constexpr auto classical = choose_table<false, true>(std::make_integer_sequence<int, 16>{});
+  static constexpr auto scalis = choose_table<true, true>(std::make_integer_sequence<int, 10>{});
+  (this->*(scalis_ ? scalis[std::size_t(degree_)] : classical[std::size_t(degree_)]))(centre, radius, tolerance,
+                                                                                        nodes);
+}
+
+void FarRuleBatch::terms(const Vec3& p, std::size_t first, const std::uint8_t* nodes, bool gradient,
+                         Terms& out) const {
+  static constexpr auto classical_values = terms_table<false, false>(std::make_integer_sequence<int, 16>{});
+  static constexpr auto classical_both = terms_table<false, true>(std::make_integer_sequence<int, 16>{});
+  static constexpr auto scalis_values = terms_table<true, false>(std::make_integer_sequence<int, 10>{});
+  static constexpr auto scalis_both = terms_table<true, true>(std::make_integer_sequence<int, 10>{});
+  const std::size_t at = std::size_t(degree_);
+  const TermsImpl impl = scalis_ ? (gradient ? scalis_both[at] : scalis_values[at])
+                                 : (gradient ? classical_both[at] : classical_values[at]);
+  (this->*impl)(p, first, nodes, out);
+}
+
+}  // namespace skelconv
