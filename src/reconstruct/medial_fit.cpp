@@ -376,6 +376,16 @@ struct Guard {
   int localize_left = 0;
   std::size_t hold_group = 1;
   std::vector<std::uint8_t> held;
+  /// After each of the next `watched` rounds taken, the whole mesh is
+  /// tested (`watch`) and the run stops where it is farther than `allowed`
+  /// (`reopened`): a repair whose defect opens again shows it within a
+  /// round or two, not after the rest of the fit. `watched_error` is the
+  /// last test's, of the mesh after round `watched_round` (history's index).
+  TopologyError watch;
+  int watched = 0;
+  bool reopened = false;
+  long long watched_error = 0;
+  std::optional<std::size_t> watched_round;
 };
 
 /// `mesh` with `step` taken by the spheres `moved` (one flag per sphere)
@@ -454,6 +464,18 @@ std::optional<MedialMesh> localize_step(const MedialMesh& mesh, const std::vecto
   return passing;
 }
 
+/// The meshings localize_step needs to reach one group of guard.hold_group
+/// from the spheres not yet held (one a halving), at least 1. With fewer
+/// left, a search holds nothing more and takes at most a part of the step
+/// (CGAL's femur and homer: second searches of 5 and 4 meshings among 241
+/// and 460 spheres held no sphere more, and their repairs failed).
+int descent_meshings(const Guard& guard) {
+  const std::size_t free = std::size_t(std::count(guard.held.begin(), guard.held.end(), 0));
+  int halvings = 0;
+  for (std::size_t group = free; group > guard.hold_group; group = (group + 1) / 2) ++halvings;
+  return std::max(halvings, 1);
+}
+
 /// Runs `stage` from `now` (and `mesh`, which it describes); the objective
 /// before (unless `values` holds it already) and after each round taken
 /// goes to `values`, the spheres after each round taken to `history`. λ
@@ -498,6 +520,17 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
       progress(fmt::format("medial fit, {}, round {} of {}: {:.4g} (RMS distance {:.4g}, largest {:.4g}), "
                            "damping {:.2g}",
                            stage.name, round, stage.rounds, value, now.rms, now.largest, lambda));
+    if (guard.watched > 0) {
+      --guard.watched;
+      guard.watched_error = guard.watch(mesh), guard.watched_round = history.size() - 1;
+      if (guard.watched_error > guard.allowed) {
+        guard.reopened = true;
+        if (progress)
+          progress(fmt::format("medial fit, {}, round {}: the topology farther from the input's again; stopped",
+                               stage.name, round));
+        return;
+      }
+    }
     if (fit_stalled(values, stage.stall_fall, stage.stall_rounds)) {
       if (progress)
         progress(fmt::format("medial fit, {}: fell by less than {:g}% a round over {} rounds; stopped", stage.name,
@@ -581,8 +614,10 @@ void undo_topology_loss(FitInProgress& fit, const TopologyError& topology_error,
       if (error < final_error) allowed = error, kept = middle;
     }
   }
-  Guard guard{topology_error, allowed, o.topology_checks, o.localize_checks,
-              std::size_t(std::max(o.hold_group, 1)), std::vector<std::uint8_t>(mesh.spheres.size(), 0)};
+  Guard guard;
+  guard.error = topology_error, guard.allowed = allowed, guard.checks_left = o.topology_checks;
+  guard.localize_left = o.localize_checks, guard.hold_group = std::size_t(std::max(o.hold_group, 1));
+  guard.held.assign(mesh.spheres.size(), 0);
   // Goes back to round `kept`: the stage it belongs to and the rounds of
   // it kept (the end of a stage is the start of the next one taken); its
   // values and the later stages' go back to there, and so does the
@@ -622,7 +657,7 @@ void undo_topology_loss(FitInProgress& fit, const TopologyError& topology_error,
     run_stages(stage, int(in_stage), guard);
   };
   for (int repair = 0; final_error > allowed; ++repair) {
-    if (first_kept && (repair >= o.topology_repairs || guard.localize_left <= 0)) {
+    if (first_kept && (repair >= o.topology_repairs || guard.localize_left < descent_meshings(guard))) {
       fall_back();
       break;
     }
@@ -669,8 +704,17 @@ void undo_topology_loss(FitInProgress& fit, const TopologyError& topology_error,
                            lost, kept, held, held - held_before, meshings - guard.localize_left, now.rms));
     Guard holding;
     holding.held = guard.held;
+    holding.watch = topology_error, holding.allowed = allowed, holding.watched = o.repair_watch_rounds;
     run_stages(stage, int(in_stage), holding);
-    final_error = topology_error(mesh);
+    // Where the topology is lost again within the repair's first rounds,
+    // holding did not keep it: another search from that round fails the
+    // same way on the real shapes (CGAL's femur: the same round again, the
+    // 5 meshings left holding no sphere more), so the fit goes back.
+    if (holding.reopened) {
+      fall_back();
+      break;
+    }
+    final_error = holding.watched_round == history.size() - 1 ? holding.watched_error : topology_error(mesh);
   }
 }
 
@@ -783,6 +827,7 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
       if (!first) step.stage.rms_limit = (1.0 + o.worst_rms_growth) * first_stage_rms;
       run_rounds(mesh, now, lambda, points, field_of, o, start, step.stage, *step.values, history, guard, clearance,
                  progress);
+      if (guard.reopened) return;
       if (i + 1 == first_stage && o.worst_rounds > 0) {
         // The second stage's RMS limit is on its own distances.
         evaluate_for(plan.back().stage);
