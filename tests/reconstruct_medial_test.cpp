@@ -703,6 +703,61 @@ TEST(MedialFit, HoldsTheSpheresAboutAHoleAndTakesTheRestOfTheStep) {
   EXPECT_GT(far_end(refused), 0.45) << "the case must be one that refusing whole steps gets wrong";
 }
 
+// Two balls 10 apart (their supports, 1.5 r, never meet), each with the
+// points 1.3 from its centre that pull its radius from 1 towards 1.3:
+// the rounds on first-order distances take it to 1.3296 (printed), then
+// 1.299999, and on to 1.3. The topology test fails where A's radius is
+// above 1.15 or B's between 1.2 and 1.31 (standing in for two thin places
+// that each open a hole). The fit's first round fails; its step is
+// bisected over the spheres (hold_group 1): A's half fails and is held at
+// radius 1, B's passes (1.3296), and the fit runs on with A held. Its next
+// round takes B back to 1.299999: the defect opens again, beside the
+// sphere held, where no holding can keep it shut. The repair's first round
+// is meshed, the repair stops there and the fit goes back to its first
+// bisection's round, tested step by step: after B's step alone passed,
+// one meshing (of a mesh with A at 1 and B within 1.2–1.31) is all the repair
+// spends, where running its rounds to the end meshed the end and bisected
+// its rounds again (at least two).
+TEST(MedialFit, ARepairWhoseDefectOpensAgainStopsAtItsFirstRound) {
+  MedialMesh balls;
+  balls.spheres = {Vec4(0.0, 0.0, 0.0, 1.0), Vec4(10.0, 0.0, 0.0, 1.0)};
+  balls.isolated = {0, 1};
+  std::vector<WeightedPoint> points;
+  for (const Vec3& centre : {Vec3(0, 0, 0), Vec3(10, 0, 0)})
+    for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, -1, 0), Vec3(0, 0.6, 0.8), Vec3(-0.8, 0, 0.6)})
+      points.push_back({centre + 1.3 * d, 1.0});
+  const ReconstructOptions o;
+  const MedialField field_of = written_field(o);
+  MedialFitOptions fit;
+  fit.fit_centres = false;
+  fit.newton_steps = 0;  // the rounds as derived above, on first-order distances
+  // No stall rule: with A held, its points' distance (0.3) is most of the
+  // objective, and B's rounds, which lower it little, would stop as stalled.
+  fit.stall_fall = 0.0;
+  fit.hold_group = 1;
+  fit.topology_checks = 0;  // the tested resume takes no step: no meshing after the repair's
+  MedialFitReport report;
+  const MedialMesh free = fit_medial_mesh(balls, points, {}, field_of, fit, &report);
+  ASSERT_GT(free.spheres[0].w(), 1.15);
+  ASSERT_GT(free.spheres[1].w(), 1.2);
+  ASSERT_LT(free.spheres[1].w(), 1.31) << "the fit left alone must open both";
+  int after_repair = 0;
+  const TopologyError two_places = [&after_repair](const MedialMesh& m) {
+    const double a = m.spheres[0].w(), b = m.spheres[1].w();
+    if (a == 1.0 && b > 1.2 && b < 1.31) ++after_repair;
+    return a > 1.15 || (b > 1.2 && b < 1.31) ? 1LL : 0LL;
+  };
+  const MedialMesh kept = fit_medial_mesh(balls, points, {}, field_of, fit, &report, {}, two_places);
+  EXPECT_EQ(after_repair, 1);
+  EXPECT_EQ(two_places(kept), 0);
+  // Run to its end, the same repair meshes its end and its rounds again.
+  after_repair = 0;
+  MedialFitOptions to_the_end = fit;
+  to_the_end.repair_watch_rounds = 0;
+  fit_medial_mesh(balls, points, {}, field_of, to_the_end, &report, {}, two_places);
+  EXPECT_GE(after_repair, 2) << "the case must be one where the repair's end costs meshings";
+}
+
 // --- The radii kept as a medial axis's (medial_slope.hpp).
 
 // A chain a–b–c, 0.1 apart, whose radii the fit left at 2, 1.5 and 0.1,

@@ -376,6 +376,16 @@ struct Guard {
   int localize_left = 0;
   std::size_t hold_group = 1;
   std::vector<std::uint8_t> held;
+  /// After each of the next `watched` rounds taken, the whole mesh is
+  /// tested (`watch`) and the run stops where it is farther than `allowed`
+  /// (`reopened`): a repair whose defect opens again shows it within a
+  /// round or two, not after the rest of the fit. `watched_error` is the
+  /// last test's, of the mesh after round `watched_round` (history's index).
+  TopologyError watch;
+  int watched = 0;
+  bool reopened = false;
+  long long watched_error = 0;
+  std::optional<std::size_t> watched_round;
 };
 
 /// `mesh` with `step` taken by the spheres `moved` (one flag per sphere)
@@ -454,6 +464,18 @@ std::optional<MedialMesh> localize_step(const MedialMesh& mesh, const std::vecto
   return passing;
 }
 
+/// The meshings localize_step needs to reach one group of guard.hold_group
+/// from the spheres not yet held (one a halving), at least 1. With fewer
+/// left, a search holds nothing more and takes at most a part of the step
+/// (CGAL's femur and homer: second searches of 5 and 4 meshings among 241
+/// and 460 spheres held no sphere more, and their repairs failed).
+int descent_meshings(const Guard& guard) {
+  const std::size_t free = std::size_t(std::count(guard.held.begin(), guard.held.end(), 0));
+  int halvings = 0;
+  for (std::size_t group = free; group > guard.hold_group; group = (group + 1) / 2) ++halvings;
+  return std::max(halvings, 1);
+}
+
 /// Runs `stage` from `now` (and `mesh`, which it describes); the objective
 /// before (unless `values` holds it already) and after each round taken
 /// goes to `values`, the spheres after each round taken to `history`. λ
@@ -498,12 +520,201 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
       progress(fmt::format("medial fit, {}, round {} of {}: {:.4g} (RMS distance {:.4g}, largest {:.4g}), "
                            "damping {:.2g}",
                            stage.name, round, stage.rounds, value, now.rms, now.largest, lambda));
+    if (guard.watched > 0) {
+      --guard.watched;
+      guard.watched_error = guard.watch(mesh), guard.watched_round = history.size() - 1;
+      if (guard.watched_error > guard.allowed) {
+        guard.reopened = true;
+        if (progress)
+          progress(fmt::format("medial fit, {}, round {}: the topology farther from the input's again; stopped",
+                               stage.name, round));
+        return;
+      }
+    }
     if (fit_stalled(values, stage.stall_fall, stage.stall_rounds)) {
       if (progress)
         progress(fmt::format("medial fit, {}: fell by less than {:g}% a round over {} rounds; stopped", stage.name,
                              100.0 * stage.stall_fall, stage.stall_rounds));
       break;
     }
+  }
+}
+
+/// A stage of the fit planned: its rounds, where its objective goes and its
+/// cap.
+struct Planned {
+  Rounds stage;
+  std::vector<double>* values;
+  int cap;
+};
+
+/// A fit under way: the mesh and its evaluation, the damping, the spheres
+/// after each round taken (`history[0]`: before the fit), the stages, and
+/// how to run them on from stage `from`, `kept` rounds of it kept.
+struct FitInProgress {
+  MedialMesh& mesh;
+  Evaluation& now;
+  double& lambda;
+  std::vector<std::vector<Vec4>>& history;
+  std::vector<Planned>& plan;
+  const FitPoints& points;
+  const MedialField& field_of;
+  std::function<void(std::size_t from, int kept, Guard& guard)> run_stages;
+};
+
+/// Where the fit ended farther from the input's topology than it started
+/// (`topology_error`), brings it back: by holding the spheres that took it
+/// there and fitting the rest again, or else by going back to the last
+/// round that kept it and testing each step from there. Apart from
+/// fit_medial_mesh because it is a policy of its own over the rounds the
+/// fit recorded, with its own budget of meshings.
+void undo_topology_loss(FitInProgress& fit, const TopologyError& topology_error, const MedialFitOptions& o,
+                        const Clearance& clearance, MedialFitReport& r,
+                        const std::function<void(std::string_view)>& progress) {
+  // The points see distances, not topology: a round may pinch a neck, fuse
+  // two parts that nearly touch or open a hole through a thin sheet. Where
+  // the fitted spheres end farther from the input's topology than the
+  // unfitted ones, the fit finds the first round that did, by bisection
+  // over the rounds (a topology lost stays lost in the rounds after,
+  // mostly; each test meshes the skeleton once). That round's step is
+  // taken without the spheres whose move takes the topology farther
+  // (localize_step), which are held where they are, and the fit runs on
+  // from there, its steps untested; its end is tested again, and so on,
+  // within localize_checks meshings for the spheres and repairs times.
+  // Where no part of the step passes, or the repairs are spent, the fit
+  // goes back to the last round that passed and resumes from there with
+  // every step tested (a step that goes farther is refused as one that
+  // raises the objective is), within topology_checks tests.
+  if (!topology_error || fit.history.size() <= 1) return;
+  MedialMesh& mesh = fit.mesh;
+  Evaluation& now = fit.now;
+  double& lambda = fit.lambda;
+  std::vector<std::vector<Vec4>>& history = fit.history;
+  std::vector<Planned>& plan = fit.plan;
+  const FitPoints& points = fit.points;
+  const MedialField& field_of = fit.field_of;
+  const auto& run_stages = fit.run_stages;
+  const auto at_round = [&](std::size_t k) {
+    MedialMesh m = mesh;
+    m.spheres = history[k];
+    return m;
+  };
+  long long final_error = topology_error(mesh);
+  long long allowed = final_error;
+  std::size_t kept = 0;  // a round whose error is `allowed`
+  if (final_error > 0) {
+    allowed = topology_error(at_round(0));
+    // The unfitted spheres may be as far from it or farther (tubes
+    // thinner than the mesh come back in pieces before the fit thickens
+    // them), while the rounds between kept it better: the middle round
+    // is tested too.
+    const std::size_t middle = (history.size() - 1) / 2;
+    if (allowed >= final_error && middle > 0) {
+      const long long error = topology_error(at_round(middle));
+      if (error < final_error) allowed = error, kept = middle;
+    }
+  }
+  Guard guard;
+  guard.error = topology_error, guard.allowed = allowed, guard.checks_left = o.topology_checks;
+  guard.localize_left = o.localize_checks, guard.hold_group = std::size_t(std::max(o.hold_group, 1));
+  guard.held.assign(mesh.spheres.size(), 0);
+  // Goes back to round `kept`: the stage it belongs to and the rounds of
+  // it kept (the end of a stage is the start of the next one taken); its
+  // values and the later stages' go back to there, and so does the
+  // history.
+  const auto back_to = [&](std::size_t round, std::size_t& stage, std::size_t& in_stage) {
+    mesh = at_round(round);
+    history.resize(round + 1);
+    stage = 0, in_stage = round;
+    while (stage + 1 < plan.size() && !plan[stage + 1].values->empty()) {
+      const std::size_t taken = plan[stage].values->empty() ? 0 : plan[stage].values->size() - 1;
+      if (in_stage < taken) break;
+      in_stage -= taken, ++stage;
+    }
+    if (!plan[stage].values->empty()) plan[stage].values->resize(in_stage + 1);
+    for (std::size_t i = stage + 1; i < plan.size(); ++i) plan[i].values->clear();
+    now = evaluate(mesh, points, field_of, plan[stage].stage.newton_steps);
+  };
+  // Where the repairs fail, the fit goes back to where the first
+  // bisection left it, nothing held, as if no repair had been tried.
+  std::optional<std::size_t> first_kept;
+  std::size_t first_lost = 0, first_last = 0;
+  std::vector<std::vector<Vec4>> first_history;
+  std::vector<std::vector<double>> first_values;
+  const auto fall_back = [&] {
+    kept = *first_kept, history = std::move(first_history);
+    for (std::size_t i = 0; i < plan.size(); ++i) *plan[i].values = std::move(first_values[i]);
+    guard.held.clear();
+    guard.localize_left = 0;
+    r.rounds_kept = kept;
+    std::size_t stage = 0, in_stage = 0;
+    back_to(kept, stage, in_stage);
+    lambda = o.initial_damping;
+    if (progress)
+      progress(fmt::format("medial fit: round {} of {} takes the topology farther from the input's than round "
+                           "{}; resumed after round {} (RMS distance {:.4g}) with each step tested",
+                           first_lost, first_last, kept, kept, now.rms));
+    run_stages(stage, int(in_stage), guard);
+  };
+  for (int repair = 0; final_error > allowed; ++repair) {
+    if (first_kept && (repair >= o.topology_repairs || guard.localize_left < descent_meshings(guard))) {
+      fall_back();
+      break;
+    }
+    const std::size_t last = history.size() - 1;
+    std::size_t lost = last;
+    while (lost - kept > 1) {
+      const std::size_t middle = (kept + lost) / 2;
+      (topology_error(at_round(middle)) <= allowed ? kept : lost) = middle;
+    }
+    if (!first_kept) {
+      first_kept = kept, first_lost = lost, first_last = last, first_history = history;
+      for (const Planned& p : plan) first_values.push_back(*p.values);
+    }
+    // The step from round `kept` to round `lost`, without the spheres
+    // that take the topology farther.
+    std::vector<double> step(per_sphere * mesh.spheres.size(), 0.0);
+    for (std::size_t i = 0; i < mesh.spheres.size(); ++i)
+      for (std::size_t c = 0; c < per_sphere; ++c)
+        step[per_sphere * i + c] = history[lost][i][Eigen::Index(c)] - history[kept][i][Eigen::Index(c)];
+    const std::size_t held_before = std::size_t(std::count(guard.held.begin(), guard.held.end(), 1));
+    const int meshings = guard.localize_left;
+    std::optional<MedialMesh> part;
+    if (repair < o.topology_repairs)
+      part = localize_step(at_round(kept), step, guard, o.max_radius_slope, clearance);
+    if (!part) {
+      fall_back();
+      break;
+    }
+    std::size_t stage = 0, in_stage = 0;
+    lambda = o.initial_damping;
+    r.rounds_kept = kept;
+    back_to(kept, stage, in_stage);
+    // Round `kept` again, taken this far: its objective is the partial
+    // step's.
+    mesh = std::move(*part);
+    history.back() = mesh.spheres;
+    now = evaluate(mesh, points, field_of, plan[stage].stage.newton_steps);
+    if (!plan[stage].values->empty()) plan[stage].values->back() = plan[stage].stage.objective(now);
+    const std::size_t held = std::size_t(std::count(guard.held.begin(), guard.held.end(), 1));
+    if (progress)
+      progress(fmt::format("medial fit: round {} takes the topology farther from the input's than round {}; "
+                           "{} spheres held ({} more, {} meshings), the rest of its step taken (RMS distance "
+                           "{:.4g}), the fit resumed untested",
+                           lost, kept, held, held - held_before, meshings - guard.localize_left, now.rms));
+    Guard holding;
+    holding.held = guard.held;
+    holding.watch = topology_error, holding.allowed = allowed, holding.watched = o.repair_watch_rounds;
+    run_stages(stage, int(in_stage), holding);
+    // Where the topology is lost again within the repair's first rounds,
+    // holding did not keep it: another search from that round fails the
+    // same way on the real shapes (CGAL's femur: the same round again, the
+    // 5 meshings left holding no sphere more), so the fit goes back.
+    if (holding.reopened) {
+      fall_back();
+      break;
+    }
+    final_error = holding.watched_round == history.size() - 1 ? holding.watched_error : topology_error(mesh);
   }
 }
 
@@ -544,14 +755,8 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
   const std::vector<Vec4> start = mesh.spheres;
   for (Vec4& sphere : mesh.spheres) sphere.w() = std::max(sphere.w(), o.min_radius);
   limit_radius_slope(mesh, o.max_radius_slope, clearance);
-  // The stages in order, each with where its objective goes and its cap
-  // (the first stage's rounds: its first-order start's and its Newton
-  // phase's together).
-  struct Planned {
-    Rounds stage;
-    std::vector<double>* values;
-    int cap;
-  };
+  // The stages in order (the first stage's rounds: its first-order start's
+  // and its Newton phase's together).
   std::vector<Planned> plan;
   const double huber = o.huber_scale * diagonal_of(surface_points);
   Rounds least_squares;
@@ -622,6 +827,7 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
       if (!first) step.stage.rms_limit = (1.0 + o.worst_rms_growth) * first_stage_rms;
       run_rounds(mesh, now, lambda, points, field_of, o, start, step.stage, *step.values, history, guard, clearance,
                  progress);
+      if (guard.reopened) return;
       if (i + 1 == first_stage && o.worst_rounds > 0) {
         // The second stage's RMS limit is on its own distances.
         evaluate_for(plan.back().stage);
@@ -631,133 +837,11 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
   };
   Guard unguarded;
   run_stages(0, 0, unguarded);
-  // The points see distances, not topology: a round may pinch a neck, fuse
-  // two parts that nearly touch or open a hole through a thin sheet. Where
-  // the fitted spheres end farther from the input's topology than the
-  // unfitted ones, the fit finds the first round that did, by bisection
-  // over the rounds (a topology lost stays lost in the rounds after,
-  // mostly; each test meshes the skeleton once). That round's step is
-  // taken without the spheres whose move takes the topology farther
-  // (localize_step), which are held where they are, and the fit runs on
-  // from there, its steps untested; its end is tested again, and so on,
-  // within localize_checks meshings for the spheres and repairs times.
-  // Where no part of the step passes, or the repairs are spent, the fit
-  // goes back to the last round that passed and resumes from there with
-  // every step tested (a step that goes farther is refused as one that
-  // raises the objective is), within topology_checks tests.
-  if (topology_error && history.size() > 1) {
-    const auto at_round = [&](std::size_t k) {
-      MedialMesh m = mesh;
-      m.spheres = history[k];
-      return m;
-    };
-    long long final_error = topology_error(mesh);
-    long long allowed = final_error;
-    std::size_t kept = 0;  // a round whose error is `allowed`
-    if (final_error > 0) {
-      allowed = topology_error(at_round(0));
-      // The unfitted spheres may be as far from it or farther (tubes
-      // thinner than the mesh come back in pieces before the fit thickens
-      // them), while the rounds between kept it better: the middle round
-      // is tested too.
-      const std::size_t middle = (history.size() - 1) / 2;
-      if (allowed >= final_error && middle > 0) {
-        const long long error = topology_error(at_round(middle));
-        if (error < final_error) allowed = error, kept = middle;
-      }
-    }
-    Guard guard{topology_error, allowed, o.topology_checks, o.localize_checks,
-                std::size_t(std::max(o.hold_group, 1)), std::vector<std::uint8_t>(mesh.spheres.size(), 0)};
-    // Goes back to round `kept`: the stage it belongs to and the rounds of
-    // it kept (the end of a stage is the start of the next one taken); its
-    // values and the later stages' go back to there, and so does the
-    // history.
-    const auto back_to = [&](std::size_t round, std::size_t& stage, std::size_t& in_stage) {
-      mesh = at_round(round);
-      history.resize(round + 1);
-      stage = 0, in_stage = round;
-      while (stage + 1 < plan.size() && !plan[stage + 1].values->empty()) {
-        const std::size_t taken = plan[stage].values->empty() ? 0 : plan[stage].values->size() - 1;
-        if (in_stage < taken) break;
-        in_stage -= taken, ++stage;
-      }
-      if (!plan[stage].values->empty()) plan[stage].values->resize(in_stage + 1);
-      for (std::size_t i = stage + 1; i < plan.size(); ++i) plan[i].values->clear();
-      now = evaluate(mesh, points, field_of, plan[stage].stage.newton_steps);
-    };
-    // Where the repairs fail, the fit goes back to where the first
-    // bisection left it, nothing held, as if no repair had been tried.
-    std::optional<std::size_t> first_kept;
-    std::size_t first_lost = 0, first_last = 0;
-    std::vector<std::vector<Vec4>> first_history;
-    std::vector<std::vector<double>> first_values;
-    const auto fall_back = [&] {
-      kept = *first_kept, history = std::move(first_history);
-      for (std::size_t i = 0; i < plan.size(); ++i) *plan[i].values = std::move(first_values[i]);
-      guard.held.clear();
-      guard.localize_left = 0;
-      r.rounds_kept = kept;
-      std::size_t stage = 0, in_stage = 0;
-      back_to(kept, stage, in_stage);
-      lambda = o.initial_damping;
-      if (progress)
-        progress(fmt::format("medial fit: round {} of {} takes the topology farther from the input's than round "
-                             "{}; resumed after round {} (RMS distance {:.4g}) with each step tested",
-                             first_lost, first_last, kept, kept, now.rms));
-      run_stages(stage, int(in_stage), guard);
-    };
-    for (int repair = 0; final_error > allowed; ++repair) {
-      if (first_kept && (repair >= o.topology_repairs || guard.localize_left <= 0)) {
-        fall_back();
-        break;
-      }
-      const std::size_t last = history.size() - 1;
-      std::size_t lost = last;
-      while (lost - kept > 1) {
-        const std::size_t middle = (kept + lost) / 2;
-        (topology_error(at_round(middle)) <= allowed ? kept : lost) = middle;
-      }
-      if (!first_kept) {
-        first_kept = kept, first_lost = lost, first_last = last, first_history = history;
-        for (const Planned& p : plan) first_values.push_back(*p.values);
-      }
-      // The step from round `kept` to round `lost`, without the spheres
-      // that take the topology farther.
-      std::vector<double> step(per_sphere * mesh.spheres.size(), 0.0);
-      for (std::size_t i = 0; i < mesh.spheres.size(); ++i)
-        for (std::size_t c = 0; c < per_sphere; ++c)
-          step[per_sphere * i + c] = history[lost][i][Eigen::Index(c)] - history[kept][i][Eigen::Index(c)];
-      const std::size_t held_before = std::size_t(std::count(guard.held.begin(), guard.held.end(), 1));
-      const int meshings = guard.localize_left;
-      std::optional<MedialMesh> part;
-      if (repair < o.topology_repairs)
-        part = localize_step(at_round(kept), step, guard, o.max_radius_slope, clearance);
-      if (!part) {
-        fall_back();
-        break;
-      }
-      std::size_t stage = 0, in_stage = 0;
-      lambda = o.initial_damping;
-      r.rounds_kept = kept;
-      back_to(kept, stage, in_stage);
-      // Round `kept` again, taken this far: its objective is the partial
-      // step's.
-      mesh = std::move(*part);
-      history.back() = mesh.spheres;
-      now = evaluate(mesh, points, field_of, plan[stage].stage.newton_steps);
-      if (!plan[stage].values->empty()) plan[stage].values->back() = plan[stage].stage.objective(now);
-      const std::size_t held = std::size_t(std::count(guard.held.begin(), guard.held.end(), 1));
-      if (progress)
-        progress(fmt::format("medial fit: round {} takes the topology farther from the input's than round {}; "
-                             "{} spheres held ({} more, {} meshings), the rest of its step taken (RMS distance "
-                             "{:.4g}), the fit resumed untested",
-                             lost, kept, held, held - held_before, meshings - guard.localize_left, now.rms));
-      Guard holding;
-      holding.held = guard.held;
-      run_stages(stage, int(in_stage), holding);
-      final_error = topology_error(mesh);
-    }
-  }
+  // The points see distances, not topology: where the fit ended farther
+  // from the input's, undo_topology_loss holds the spheres that took it
+  // there or goes back and tests each step.
+  FitInProgress fit{mesh, now, lambda, history, plan, points, field_of, run_stages};
+  undo_topology_loss(fit, topology_error, o, clearance, r, progress);
   if (report != nullptr) *report = r;
   return mesh;
 }

@@ -195,6 +195,15 @@ struct MedialFitOptions {
   /// farther still, the fit goes back to where the first bisection left it,
   /// nothing held, and tests each step (topology_checks).
   int topology_repairs = 2;
+  /// After a repair, the fit's first this many rounds are each meshed;
+  /// where one is farther from the input's topology (the defect opened
+  /// again: holding did not keep it), the repair stops there and the fit
+  /// goes back as above, instead of fitting the rest of its rounds, meshing
+  /// their end and searching again (docs/reconstruction_medial.md, "The
+  /// guard acts where the defect is": on CGAL's dragon, coupling and femur
+  /// the defect opens again in the repair's first round). Costs one meshing
+  /// where the repair holds; 0: the end alone is tested.
+  int repair_watch_rounds = 1;
 };
 
 struct MedialFitReport {
