@@ -413,8 +413,9 @@ class Simplifier {
     Vec4 best = mid;
     double best_error = std::numeric_limits<double>::infinity();
     const bool held_u = k_.held[std::size_t(u)], held_v = k_.held[std::size_t(v)];
-    if (held_u && held_v) return;  // two tips' balls: neither gives way
-    if (held_u || held_v) {
+    // Two held balls merge as any two (the budget must be reachable: a
+    // small part's every ball may be held), and the merged ball is held.
+    if (held_u != held_v) {
       // A tip's ball keeps its place: the other merges into it.
       best = held_u ? su : sv;
       best_error = q.error(best);

@@ -133,8 +133,8 @@ struct QuadricOptions {
   /// deeper in too, so without it the collapses merge a horn's end balls
   /// into a deeper one at no error and the horn comes back short (CGAL's
   /// mannequin-devil: into a sheet's corner 0.67 deeper). So the ball is
-  /// also held: a collapse with it keeps its sphere, and two held balls
-  /// are never merged.
+  /// also held: a collapse with it keeps its sphere (two held balls merge
+  /// as any two, into a held ball, so that the budget is always reached).
   std::vector<ReachPoint> reach_points;
   double reach_weight = 1.0;
 };
