@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -25,6 +26,7 @@
 #include "skelconv/skeleton/skeleton_file.hpp"
 #include "src/reconstruct/fill_cavities.hpp"
 #include "src/reconstruct/tube_ends.hpp"
+#include "src/reconstruct/unreached_tips.hpp"
 
 namespace skelconv::reconstruct {
 namespace {
@@ -203,6 +205,64 @@ TEST(QuadricMedialMesh, TubeBecomesAChainOnItsAxis) {
   // Shortest edges first: the five spheres spread over the 2 long axis.
   EXPECT_LT(low, 0.4);
   EXPECT_GT(high, 1.6);
+}
+
+// A horn on a sheet: the 6 × 6 sheet of quadric_sheet (spacing 0.1,
+// between the planes z = ±0.1), and from its corner (0.5, 0.5, 0) a chain
+// of balls along x on the axis of a cone of half-angle 15° whose apex is
+// at x = 0.5 + 0.1 / sin 15° = 0.886: t = 0.1, 0.12, …, 0.38 from the
+// apex, each of radius t sin 15° touching the cone at four points. Every
+// ball on the axis touches every one of the cone's tangent planes, so the
+// collapses may merge the chain's end ball into a deeper one at no error
+// from them. The apex is a sample that no ball reaches: the first ball
+// falls 0.1 (1 − sin 15°) = 0.074 short of it, 2.9 times its radius
+// (0.026), as a horn's tip falls short of the balls pruning leaves. Held
+// (unreached_tips.hpp), that ball keeps its place through the collapses.
+TEST(QuadricMedialMesh, AHornsEndBallKeepsItsPlaceThroughTheCollapses) {
+  const double angle = 15.0 * std::numbers::pi / 180.0;
+  MedialGraph g = quadric_sheet(6, 0.1, 0.1);
+  const Vec3 apex(0.5 + 0.1 / std::sin(angle), 0.5, 0);
+  const std::int32_t corner = std::int32_t(g.vertices.size() - 1);  // (0.5, 0.5, 0)
+  ASSERT_LT((g.vertices[std::size_t(corner)].centre - Vec3(0.5, 0.5, 0)).norm(), 1e-12);
+  const std::int32_t apex_sample = std::int32_t(g.samples.size());
+  g.samples.push_back(apex);
+  std::int32_t previous = corner;
+  for (int k = 14; k >= 0; --k) {
+    const double t = 0.1 + 0.02 * k;
+    const std::int32_t first = std::int32_t(g.samples.size());
+    for (const Vec3& e : {Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)})
+      g.samples.push_back(apex + t * std::cos(angle) * (std::cos(angle) * Vec3(-1, 0, 0) + std::sin(angle) * e));
+    g.vertices.push_back(MedialVertex{apex - Vec3(t, 0, 0), t * std::sin(angle), {first, first + 1, first + 2, first + 3}});
+    add_edge(g, previous, std::int32_t(g.vertices.size() - 1));
+    previous = std::int32_t(g.vertices.size() - 1);
+  }
+  const std::int32_t tip = previous;
+  const double first_gap = 0.1 * (1 - std::sin(angle));  // 0.0741
+  // How far the spheres fall short of the apex at best.
+  const auto shortfall = [&apex](const MedialMesh& m) {
+    double least = std::numeric_limits<double>::infinity();
+    for (const Vec4& s : m.spheres) least = std::min(least, (apex - s.head<3>()).norm() - s.w());
+    return least;
+  };
+  QuadricOptions o;
+  o.budget = 4;
+  // Alone, the collapses merge the whole horn into the sheet's corner
+  // ball, 0.386 − 0.1 = 0.286 short of the apex.
+  ASSERT_GT(shortfall(quadric_medial_mesh(g, o)), first_gap + 0.1)
+      << "the case must be one the collapses alone shorten";
+  // Reach 0.05: the apex's gap is above it and above the first ball's
+  // radius; every other sample is on a ball.
+  o.reach_points = detail::unreached_tips(g, 0.05, 1.0, 0.1);
+  ASSERT_EQ(o.reach_points.size(), 1u);
+  EXPECT_EQ(o.reach_points[0].vertex, tip);
+  EXPECT_EQ(o.reach_points[0].point, g.samples[std::size_t(apex_sample)]);
+  const MedialMesh held = quadric_medial_mesh(g, o);
+  EXPECT_NEAR(shortfall(held), first_gap, 1e-12);
+  EXPECT_LE(held.triangles.size() + held.edges.size() + held.isolated.size(), 4u);
+  // The held ball is a tube's end, not a sphere apart.
+  EXPECT_TRUE(held.isolated.empty());
+  // Thicker than it is long beyond the ball (thinness 3 > 2.9): not a tip.
+  EXPECT_TRUE(detail::unreached_tips(g, 0.05, 3.0, 0.1).empty());
 }
 
 // Inside the unit ball (depth 1 − |x|), three tube ends off a sphere B at

@@ -24,13 +24,13 @@ struct Quadric {
   Eigen::Vector4d b = Eigen::Vector4d::Zero();
   double c = 0.0;
 
-  /// The squared distance to the plane through q with outward unit normal n.
-  void add_plane(const Vec3& q, const Vec3& n) {
+  /// `weight` × the squared distance to the plane through q with outward unit normal n.
+  void add_plane(const Vec3& q, const Vec3& n, double weight = 1.0) {
     const Eigen::Vector4d m(n.x(), n.y(), n.z(), 1.0);
     const double k = n.dot(q);
-    A += m * m.transpose();
-    b += k * m;
-    c += k * k;
+    A += weight * m * m.transpose();
+    b += weight * k * m;
+    c += weight * k * k;
   }
   Quadric& operator+=(const Quadric& o) {
     A += o.A, b += o.b, c += o.c;
@@ -63,6 +63,7 @@ class Complex {
   std::vector<std::vector<Triangle>> triangles_at;
   std::set<Triangle> triangles;
   std::vector<bool> alive;
+  std::vector<bool> held;  // a sphere that keeps its place (QuadricOptions::reach_points)
   std::vector<unsigned> stamp;  // bumped whenever a vertex changes
 
   bool has_edge(Index u, Index v) const {
@@ -179,7 +180,7 @@ class Complex {
   }
 };
 
-Complex initial_complex(const MedialGraph& graph) {
+Complex initial_complex(const MedialGraph& graph, const QuadricOptions& o) {
   Complex k;
   const std::size_t n = graph.vertices.size();
   k.sphere.resize(n);
@@ -187,6 +188,7 @@ Complex initial_complex(const MedialGraph& graph) {
   k.neighbours.resize(n);
   k.triangles_at.resize(n);
   k.alive.assign(n, true);
+  k.held.assign(n, false);
   k.stamp.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
     const MedialVertex& m = graph.vertices[i];
@@ -199,6 +201,11 @@ Complex initial_complex(const MedialGraph& graph) {
       const Vec3 out = q - m.centre;
       if (out.norm() > 0.0) k.quadric[i].add_plane(q, out.normalized());
     }
+  }
+  for (const ReachPoint& p : o.reach_points) {
+    const Vec3 out = p.point - k.sphere[std::size_t(p.vertex)].head<3>();
+    if (out.norm() > 0.0) k.quadric[std::size_t(p.vertex)].add_plane(p.point, out.normalized(), o.reach_weight);
+    k.held[std::size_t(p.vertex)] = true;
   }
   for (const MedialEdge& e : graph.edges) k.add_edge(e.a, e.b);
   for (const auto& face : graph.faces)
@@ -405,14 +412,23 @@ class Simplifier {
     const Vec4 solved = A.ldlt().solve(q.b + lambda * mid);
     Vec4 best = mid;
     double best_error = std::numeric_limits<double>::infinity();
-    const double smallest = 0.5 * std::min(su.w(), sv.w());
-    if (solved.allFinite() && solved.w() > smallest && inside_shape(solved, su, sv))
-      best = solved, best_error = q.error(solved);
-    // The ends are balls already; the midpoint is tested as the solution is.
-    const bool mid_allowed = inside_shape(mid, su, sv);
-    for (const Vec4& s : {su, sv, mid}) {
-      const double e = q.error(s);
-      if (e < best_error && (s != mid || mid_allowed)) best = s, best_error = e;
+    const bool held_u = k_.held[std::size_t(u)], held_v = k_.held[std::size_t(v)];
+    // Two held balls merge as any two (the budget must be reachable: a
+    // small part's every ball may be held), and the merged ball is held.
+    if (held_u != held_v) {
+      // A tip's ball keeps its place: the other merges into it.
+      best = held_u ? su : sv;
+      best_error = q.error(best);
+    } else {
+      const double smallest = 0.5 * std::min(su.w(), sv.w());
+      if (solved.allFinite() && solved.w() > smallest && inside_shape(solved, su, sv))
+        best = solved, best_error = q.error(solved);
+      // The ends are balls already; the midpoint is tested as the solution is.
+      const bool mid_allowed = inside_shape(mid, su, sv);
+      for (const Vec4& s : {su, sv, mid}) {
+        const double e = q.error(s);
+        if (e < best_error && (s != mid || mid_allowed)) best = s, best_error = e;
+      }
     }
     Candidate c;
     const double length = o_.length_weight * 0.5 * q.A.trace() * (su.head<3>() - sv.head<3>()).squaredNorm();
@@ -462,6 +478,7 @@ class Simplifier {
       k_.add_triangle(sorted(moved[0], moved[1], moved[2]));
     }
     k_.alive[std::size_t(v)] = false;
+    k_.held[std::size_t(u)] = k_.held[std::size_t(u)] || k_.held[std::size_t(v)];
     k_.quadric[std::size_t(u)] += k_.quadric[std::size_t(v)];
     k_.sphere[std::size_t(u)] = c.merged;
     ++k_.stamp[std::size_t(u)];
@@ -564,7 +581,8 @@ MedialMesh to_mesh(const Complex& k, double thin_fraction) {
 
 MedialMesh quadric_medial_mesh(const MedialGraph& graph, const QuadricOptions& o, QuadricReport* report) {
   QuadricReport r;
-  Complex k = initial_complex(graph);
+  Complex k = initial_complex(graph, o);
+  r.tips_held = std::size_t(std::count(k.held.begin(), k.held.end(), true));
   r.vertices_before = k.sphere.size();
   r.triangles_before = k.triangles.size();
   r.euler_before = k.euler_characteristic();

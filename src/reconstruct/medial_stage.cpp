@@ -28,6 +28,7 @@
 #include "fill_cavities.hpp"
 #include "thin_walls.hpp"
 #include "tube_ends.hpp"
+#include "unreached_tips.hpp"
 
 namespace skelconv::reconstruct {
 namespace {
@@ -168,6 +169,12 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     options.budget = budget;
     options.inside_samples = inside_samples;
     options.inside_tolerance = 0.5 * diagonal / o.measure_divisions;
+    if (m.tip_end_thinness > 0.0) {
+      options.reach_points =
+          detail::unreached_tips(g, m.tip_end_reach * diagonal / m.sample_divisions, m.tip_end_thinness,
+                                 diagonal / m.sample_divisions);
+      options.reach_weight = m.tip_end_weight;
+    }
     MedialMesh mesh = quadric_medial_mesh(g, options, &q);
     spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach, quadric.depth);
     // Each tube end got one more edge: simplified further where that
@@ -242,7 +249,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
         spikes += part_spikes[p];
         q.collapses += pr.collapses, q.refused_by_link += pr.refused_by_link;
         q.loops_closed += pr.loops_closed, q.loops_closed_inside += pr.loops_closed_inside;
-        q.bridges_closed += pr.bridges_closed;
+        q.bridges_closed += pr.bridges_closed, q.tips_held += pr.tips_held;
         q.euler_before += pr.euler_before, q.euler_after += pr.euler_after;
       }
       mesh = joined_part_meshes(meshes);
@@ -258,6 +265,10 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
                                                               q.loops_closed_inside, q.bridges_closed)
                                                 : std::string(),
                              q.euler_before, q.euler_after));
+    if (o.progress && q.tips_held > 0)
+      o.progress(fmt::format("medial mesh: {} balls held in place through the collapses, each the nearest to a sample "
+                             "at a protrusion's end that the pruned balls fall short of",
+                             q.tips_held));
     if (o.progress && spikes > 0)
       o.progress(fmt::format("medial mesh: {} spikes' spheres beyond their ends moved back to the input's surface",
                              spikes));

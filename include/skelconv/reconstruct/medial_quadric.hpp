@@ -49,15 +49,28 @@
 // collapse, and after the collapses each side of a tube edge that bridges
 // a hole between two spheres of sheets (the loop of the edge and the
 // shortest way back along the hole's rim, closed by a fan of triangles).
+//
+// Where given (QuadricOptions::reach_points), the ball nearest a sample at
+// a thin protrusion's end that no ball reaches keeps its place: a collapse
+// with it keeps its sphere.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "skelconv/reconstruct/medial_graph.hpp"
 #include "skelconv/reconstruct/medial_mesh.hpp"
 
 namespace skelconv::reconstruct {
+
+/// A point of the surface that vertex `vertex` of the medial graph must go
+/// on reaching (QuadricOptions::reach_points).
+struct ReachPoint {
+  std::int32_t vertex = 0;
+  Vec3 point;
+};
 
 struct QuadricOptions {
   /// Collapse until the primitives are at most this many.
@@ -110,6 +123,20 @@ struct QuadricOptions {
   /// medial_stage.cpp takes half a facet of the measuring mesh, below
   /// what the measure resolves.
   double inside_tolerance = 0.0;
+  /// Points of the surface the balls fall short of at the end of a thin
+  /// protrusion (the samples at a horn's tip, beyond the balls pruning
+  /// left: unreached_tips.hpp), each with the ball falling shortest of it.
+  /// Each adds to that vertex's quadric the plane through the point facing
+  /// away from the ball's centre, `reach_weight` times: its error is how
+  /// far a sphere falls short of the point along that way. The contact
+  /// planes along a cone all touch every ball on its axis, the larger ones
+  /// deeper in too, so without it the collapses merge a horn's end balls
+  /// into a deeper one at no error and the horn comes back short (CGAL's
+  /// mannequin-devil: into a sheet's corner 0.67 deeper). So the ball is
+  /// also held: a collapse with it keeps its sphere (two held balls merge
+  /// as any two, into a held ball, so that the budget is always reached).
+  std::vector<ReachPoint> reach_points;
+  double reach_weight = 1.0;
 };
 
 struct QuadricReport {
@@ -119,6 +146,7 @@ struct QuadricReport {
   std::size_t loops_closed = 0;  ///< covered loops the collapses closed (the header)
   std::size_t loops_closed_inside = 0;  ///< of those, loops inside the input, not the balls (inside_samples)
   std::size_t bridges_closed = 0;       ///< sheets closed across a tube edge after the collapses (inside_samples)
+  std::size_t tips_held = 0;            ///< balls held in place for their reach points (reach_points)
 };
 
 /// The medial mesh of `graph` (its faces included) simplified as described

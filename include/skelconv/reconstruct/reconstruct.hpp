@@ -60,6 +60,18 @@ struct MedialOptions {
   /// 0 = none kept.
   double tip_reach = 0.5;
   double tip_thinness = 2.0;
+  /// The samples at a protrusion's end that pruning left out of every ball's
+  /// reach (src/reconstruct/unreached_tips.hpp: a gap of at least
+  /// `tip_end_reach` sample spacings and `tip_end_thinness` × the radius of
+  /// the ball falling shortest of it, no other such sample within a
+  /// spacing) are held by that ball through the collapses
+  /// (QuadricOptions::reach_points, weight `tip_end_weight`), so that a
+  /// horn keeps its length. A quarter spacing: the devil's horn's tip is
+  /// 0.42 spacings beyond its last ball; thinness 1: a cone under 30°
+  /// half-angle (the devil's last ball is 1.19 radii short). 0 = none held.
+  double tip_end_reach = 0.25;
+  double tip_end_thinness = 1.0;
+  double tip_end_weight = 1.0;
   /// A tube's free end is extended by one sphere this many radii beyond it
   /// (the medial axis stops short of a cap); 0 = none.
   double end_extension = 1.0;
