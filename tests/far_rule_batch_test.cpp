@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "skelconv/primitives/far_rule_batch.hpp"
+#include "src/detail/far_rule_batch.hpp"
 #include "skelconv/primitives/scalis_segment.hpp"
 #include "skelconv/primitives/segment.hpp"
 #include "skelconv/skeleton/skeleton.hpp"
@@ -26,6 +26,8 @@
 namespace skelconv {
 namespace far_rule_batch_test {  // named: the test files share a unity build
 namespace {
+
+using detail::FarRuleBatch;
 
 const FarSegmentRule& rule_of(const Primitive& primitive) {
   if (const Segment* segment = std::get_if<Segment>(&primitive)) return *segment->far_rule();

@@ -1,5 +1,5 @@
-// Implementation of skelconv/primitives/far_rule_batch.hpp.
-#include "skelconv/primitives/far_rule_batch.hpp"
+// Implementation of src/detail/far_rule_batch.hpp.
+#include "../detail/far_rule_batch.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -12,10 +12,10 @@
 
 #include "far_rule_node.hpp"
 
-namespace skelconv {
+namespace skelconv::detail {
 
 // Named, so that nothing here meets another file's names in a unity build.
-namespace detail::far_rule_batch {
+namespace far_rule_batch {
 namespace {
 
 using far_rule::lanes_half_power;
@@ -39,7 +39,7 @@ __m128d squared_norm(__m128d x, __m128d y, __m128d z) {
 __m128d pair(const double* v, std::size_t k0, std::size_t k1) { return _mm_set_pd(v[k1], v[k0]); }
 
 }  // namespace
-}  // namespace detail::far_rule_batch
+}  // namespace far_rule_batch
 
 std::optional<FarRuleBatch> FarRuleBatch::make(std::span<const FarSegmentRule> rules) {
   if (rules.empty()) return std::nullopt;
@@ -86,7 +86,7 @@ std::optional<FarRuleBatch> FarRuleBatch::make(std::span<const FarSegmentRule> r
 
 template <int I, bool Scalis, bool Ball>
 void FarRuleBatch::choose_impl(const Vec3& p, double radius, double tolerance, std::uint8_t* nodes) const {
-  using namespace detail::far_rule_batch;
+  using namespace far_rule_batch;
   const std::size_t count = rules_.size();
   // Per segment, two at a time: Q at the ends, S (at P, or its least and
   // largest over the ball) and the lower bound, added to f̲ in order.
@@ -167,7 +167,7 @@ void FarRuleBatch::choose_impl(const Vec3& p, double radius, double tolerance, s
 
 template <int I, bool Scalis, bool Gradient>
 void FarRuleBatch::terms_impl(const Vec3& p, std::size_t first, const std::uint8_t* nodes, Terms& out) const {
-  using namespace detail::far_rule_batch;
+  using namespace far_rule_batch;
   using detail::far_rule::add_node;
   using detail::far_rule::NodeSegment;
   const std::size_t size = std::min(chunk, rules_.size() - first);
@@ -307,4 +307,4 @@ void FarRuleBatch::terms(const Vec3& p, std::size_t first, const std::uint8_t* n
   (this->*impl)(p, first, nodes, out);
 }
 
-}  // namespace skelconv
+}  // namespace skelconv::detail

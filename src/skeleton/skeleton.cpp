@@ -192,7 +192,7 @@ void add_segments_within(const std::vector<Primitive>& primitives, const std::ve
 /// and additions, hence the same sum, bit for bit.
 template <class Need>
 void add_segments_batched(const std::vector<Primitive>& primitives, const std::vector<std::string>& locations,
-                          const FarRuleBatch& batch, const Vec3& p, Need need, double tolerance,
+                          const detail::FarRuleBatch& batch, const Vec3& p, Need need, double tolerance,
                           const std::uint8_t* chosen, FieldSample& total) {
   const std::size_t count = batch.size();
   const bool gradient = need != Need::value;
@@ -201,14 +201,14 @@ void add_segments_batched(const std::vector<Primitive>& primitives, const std::v
     batch.choose(p, tolerance, own.data());
     chosen = own.data();
   }
-  static_assert(FarRuleBatch::chunk == far_rule_chunk, "the terms are added in add_segments_within's order");
-  FarRuleBatch::Terms terms;
+  static_assert(detail::FarRuleBatch::chunk == far_rule_chunk, "the terms are added in add_segments_within's order");
+  detail::FarRuleBatch::Terms terms;
   std::size_t position = 0;  // the segment being evaluated
   // The sums in locals, not through `total`, which the loop would
   // otherwise load and store at every term; the same additions.
   double value = total.value, x = total.gradient.x(), y = total.gradient.y(), z = total.gradient.z();
   try {
-    for (std::size_t first = 0; first < count; first += FarRuleBatch::chunk) {
+    for (std::size_t first = 0; first < count; first += detail::FarRuleBatch::chunk) {
       batch.terms(p, first, chosen, gradient, terms);
       for (std::size_t j = 0; j < terms.size; ++j) {
         if (!terms.exact[j]) continue;
@@ -440,7 +440,7 @@ void Skeleton::prepare() const {
       if (!index->far_rules.empty() && std::all_of(index->far_rules.begin(), index->far_rules.end(), same)) {
         index->far_rule_degree = index->far_rules.front().degree();
         index->far_rule_scalis = index->far_rules.front().scalis();
-        index->far_batch = FarRuleBatch::make(index->far_rules);
+        index->far_batch = detail::FarRuleBatch::make(index->far_rules);
       }
     }
     cache.index = std::move(index);

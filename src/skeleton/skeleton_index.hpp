@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "skelconv/field/support_grid.hpp"
-#include "skelconv/primitives/far_rule_batch.hpp"
+#include "../detail/far_rule_batch.hpp"
 #include "skelconv/primitives/far_segment_rule.hpp"
 
 namespace skelconv::detail {

@@ -77,6 +77,12 @@ struct NodeSums {
 };
 }  // namespace detail::far_rule
 
+namespace detail {
+/// The rules of a list of one kind and degree, chosen and summed many
+/// segments at a time (the runtime's, src/detail/far_rule_batch.hpp).
+class FarRuleBatch;
+}  // namespace detail
+
 /// The bounds of one bin of S for the even rules n = 2, 4, …, max_nodes (at
 /// index n/2 − 1; the rules run two nodes at a time), for f and for ∇f
 /// (far_segment_rule.cpp builds them).
@@ -267,8 +273,8 @@ class FarSegmentRule {
 
  private:
   /// Copies these rules' constants side by side and chooses and sums them
-  /// with the same operations (far_rule_batch.hpp).
-  friend class FarRuleBatch;
+  /// with the same operations (src/detail/far_rule_batch.hpp).
+  friend class detail::FarRuleBatch;
   FarSegmentRule() = default;
   /// What make and make_scalis share once the integrand is set: the
   /// constants of the bound and of the lower bound, the table; false where

@@ -1,4 +1,4 @@
-// skelconv/primitives/far_rule_batch.hpp — the far rules of a list of Cauchy
+// src/detail/far_rule_batch.hpp — the far rules of a list of Cauchy
 // segments of one kind and degree (FarSegmentRule), chosen and summed many
 // segments at a time (docs/field.md, "Tolerance").
 //
@@ -13,7 +13,8 @@
 // order (a rule's even and odd nodes summed apart, then added), and the
 // caller adds the terms in the order Skeleton's tolerance mode always has
 // (grouped by n within chunks of `chunk` segments): the same rules and the
-// same values, bit for bit (tests/far_rule_batch_test.cpp).
+// same values, bit for bit (tests/far_rule_batch_test.cpp). Internal to
+// skelconv_runtime: the skeleton's index holds one (skeleton_index.hpp).
 #pragma once
 
 #include <array>
@@ -27,7 +28,7 @@
 #include "skelconv/geometry.hpp"
 #include "skelconv/primitives/far_segment_rule.hpp"
 
-namespace skelconv {
+namespace skelconv::detail {
 
 class FarRuleBatch {
  public:
@@ -102,4 +103,4 @@ class FarRuleBatch {
   int weight_degree_ = 0;
 };
 
-}  // namespace skelconv
+}  // namespace skelconv::detail
