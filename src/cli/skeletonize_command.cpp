@@ -188,7 +188,7 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
   command->add_option("--medial-newton-steps", options.medial.fit.newton_steps,
                       "Newton steps along the gradient for each fit point's distance to the result, after a first-order "
                       "start (default 1, at most 3; 0: first-order distances only): 1 measures sharp edges and corners "
-                      "truly (docs/reconstruction_medial.md, \"One Newton step in both stages\")")
+                      "truly (docs/reconstruction_medial.md, \"The fit\")")
       ->check(CLI::Range(0, 3));
   command->add_flag("--medial-thin-walls,!--no-medial-thin-walls", options.medial.thin_walls,
                     "The medial path samples the input again, up to 2.5 times finer, where a part of it is a thin wall "

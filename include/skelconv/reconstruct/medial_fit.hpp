@@ -112,7 +112,7 @@ struct MedialFitOptions {
   /// rotor's start ended at λ 140 after rounds that fell by 0.1%), and the
   /// Newton phase minimises other distances, whose steps that λ would
   /// shorten until the phase stops as stalled after two rounds
-  /// (docs/reconstruction_medial.md, "The start ended sooner").
+  /// (docs/reconstruction_medial.md, "The fit": two stages).
   bool newton_phase_fresh_damping = true;
   /// Whether the centres move too (otherwise only the radii do).
   bool fit_centres = true;
@@ -121,7 +121,7 @@ struct MedialFitOptions {
   double huber_scale = 0.005;
   /// No radius ends below this (absolute length; radii below it start at
   /// it): a tube thinner than the resolution it is meshed at comes back in
-  /// pieces, or not at all (docs/reconstruction_medial.md, "Topology").
+  /// pieces, or not at all (docs/reconstruction_medial.md, "The fit": the radius floor).
   double min_radius = 0.0;
   /// Along every edge of the mesh the radii differ by at most this × the
   /// centres' distance (medial_slope.hpp: no ball inside its neighbour's,
@@ -142,7 +142,7 @@ struct MedialFitOptions {
   /// first stage starts on first-order distances (first_order_start) and
   /// takes the step once that has stalled, which lowered the RMS distance
   /// on the coarse sphere (0.278% → 0.258%) and on most real shapes
-  /// (docs/reconstruction_medial.md, "One Newton step in both stages").
+  /// (docs/reconstruction_medial.md, "The fit": the distance).
   /// 2 steps, on earlier code, opened a tunnel in homer (χ 2 → 0). Each
   /// step is one more field evaluation a point.
   int newton_steps = 1;
