@@ -439,8 +439,8 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
                                  : RegionSeeds{.seeds = surface_seeds(metered, iso, run.box, seed_options), .deferred = {}};
   std::vector<Vec3> seeds = std::move(found.seeds);
   if (seeds.empty() && !found.deferred.empty()) {
-    // Every ray of the regions' first sources failed (on an inverse
-    // primitive's skeleton): the others try.
+    // No ray of the regions' first sources found a crossing: the others
+    // try, as surface_seeds would have.
     seeds = seeds_from_points(metered, iso, run.box, found.deferred, {}, seed_options);
     found.deferred.clear();
   }

@@ -209,21 +209,41 @@ void check_some_surface(const SkeletonScan& scan, double iso) {
   }
 }
 
+/// How far apart, in `spacing`s, two skeleton points inside may be and
+/// still be joined into one region (when the field between them is
+/// checked at every `spacing`): the points of one element, a few per
+/// element, lie farther apart than a fine spacing; much farther apart and
+/// the checks would cost as much as the rays they spare.
+constexpr double region_link_reach = 4.0;
+
 /// The region of every skeleton point inside (RegionSeeds), as the index of
 /// its first point; −1 outside. Each point inside is joined to the nearest
-/// earlier point inside within `spacing` (the lowest index among equals)
-/// when f ≥ iso at their midpoint too: a gap between two points inside
-/// closer than the spacing is thinner than the grid resolves, and a gap
-/// that the midpoint shows keeps them apart. The midpoints are evaluated
-/// on `threads` threads, each into its own slot.
+/// earlier point inside within region_link_reach spacings (the lowest
+/// index among equals) when f ≥ iso also at points at most `spacing` apart
+/// on the segment between them: a gap between them thinner than that is
+/// thinner than the grid resolves, and a gap a check meets keeps them
+/// apart. The checks are evaluated on `threads` threads, each point's
+/// into its own slot. On a field infinite on its skeleton every point is
+/// a region of its own: f = +inf marks an inverse primitive's skeleton
+/// whatever its weight (docs/field.md), so f ≥ iso between two points does
+/// not show them in one piece (along a capsule carved on its axis, the
+/// carving's points would join the capsule's through its skeleton, and the
+/// rays from them that find the cavity would not be cast).
 std::vector<std::int64_t> point_regions(const ImplicitField& field, double iso, const Box3& box,
                                         const SkeletonScan& scan, double spacing, unsigned threads) {
   const std::vector<Vec3>& points = field.skeleton_points;
   std::vector<std::int64_t> nearest(points.size(), -1);
+  if (field.infinite_on_skeleton) {
+    std::vector<std::int64_t> region(points.size(), -1);
+    for (std::size_t k = 0; k < points.size(); ++k)
+      if (scan.inside[k]) region[k] = std::int64_t(k);
+    return region;
+  }
+  const double reach = region_link_reach * spacing;
   std::map<Cell, std::vector<std::size_t>> cells;
   for (std::size_t k = 0; k < points.size(); ++k) {
     if (!scan.inside[k]) continue;
-    const auto [i, j, l] = cell_of(points[k], box.lo, spacing);
+    const auto [i, j, l] = cell_of(points[k], box.lo, reach);
     double best = std::numeric_limits<double>::infinity();
     for (long long a = i - 1; a <= i + 1; ++a)
       for (long long b = j - 1; b <= j + 1; ++b)
@@ -232,7 +252,7 @@ std::vector<std::int64_t> point_regions(const ImplicitField& field, double iso, 
           if (found == cells.end()) continue;
           for (const std::size_t earlier : found->second) {
             const double distance = (points[earlier] - points[k]).norm();
-            if (distance > spacing) continue;
+            if (distance > reach) continue;
             if (distance < best || (distance == best && std::int64_t(earlier) < nearest[k]))
               best = distance, nearest[k] = std::int64_t(earlier);
           }
@@ -255,7 +275,11 @@ std::vector<std::int64_t> point_regions(const ImplicitField& field, double iso, 
         // Where the field cannot be evaluated (next to an inverse
         // primitive's skeleton) the points stay apart: each keeps its rays.
         try {
-          joined[k] = reaches(0.5 * (p + points[k])) ? 1 : 0;
+          // At least the midpoint, and points at most `spacing` apart.
+          const int pieces = std::max(2, int(std::ceil((p - points[k]).norm() / spacing)));
+          for (int n = 1; n < pieces; ++n)
+            if (!reaches(p + (double(n) / pieces) * (points[k] - p))) return;
+          joined[k] = 1;
         } catch (const EvaluationError&) {
           if (!field.infinite_on_skeleton) throw;
         }

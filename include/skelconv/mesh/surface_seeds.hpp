@@ -50,8 +50,10 @@ std::vector<Vec3> surface_seeds(const ImplicitField& field, double iso, const Bo
 /// grid method's continuation), where the rays of every skeleton point
 /// would mostly land on surfaces an earlier point's rays already seeded.
 /// The skeleton points where f > iso are joined into regions: each to its
-/// nearest earlier such point within `spacing` when f ≥ iso also midway
-/// between them (at the grid's resolution, the same piece of {f > iso}).
+/// nearest earlier such point within 4 `spacing`s when f ≥ iso also at
+/// points at most `spacing` apart between them (at the grid's resolution,
+/// the same piece of {f > iso}; not for a field infinite on its skeleton,
+/// whose markers f = +inf say nothing of the pieces).
 /// Only the first ray source of each region (surface_seeds' thinning)
 /// casts its six rays; the region's other sources are `deferred`: their
 /// rays would start inside a piece already seeded. The mesher casts them
