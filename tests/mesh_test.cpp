@@ -348,15 +348,17 @@ MeshReport expect_seeded_walk_mesh_is_dense(const Skeleton& skeleton, double siz
   return report;
 }
 
-TEST(MeshSeeds, AWalkInsideOneSurfaceIsSeededByOneSourcesSixRays) {
+TEST(MeshSeeds, AWalkInsideOneSurfaceIsSeededByTheRaysOfAFewSources) {
   // The grid's continuation meshes a surface from any one seed on it, so
-  // the skeleton points of one connected piece inside the surface cast the
-  // rays of one of them (region_seeds): on 60 segments of the bench's walk,
-  // all inside one surface, at most 6 seeds, where one source per voxel
-  // cast hundreds; the mesh is the dense sampling's all the same.
+  // the skeleton points joined through grid nodes inside the surface cast
+  // the rays of one of them (region_seeds): 60 segments of the bench's
+  // walk, one surface, seeded by a few sources' rays (those whose nearest
+  // grid node lies outside the tube, 0.35 thick, cast their own), where one
+  // source per voxel cast 380 seeds; the mesh is the dense sampling's all
+  // the same.
   const Skeleton walk = walk_skeleton({60, 4, 4.0, {1.0}}, bench_walk_seed);
   const MeshReport report = expect_seeded_walk_mesh_is_dense(walk, 0.5, 1);
-  EXPECT_LE(report.seeds, 6u);
+  EXPECT_LE(report.seeds, 30u);
 }
 
 TEST(MeshSeeds, ASmallComponentFarFromAWalkIsStillMeshed) {
@@ -367,7 +369,7 @@ TEST(MeshSeeds, ASmallComponentFarFromAWalkIsStillMeshed) {
   std::vector<Primitive> primitives = walk.primitives();
   primitives.emplace_back(PointPrimitive(Vec3(-6.0, -6.0, -6.0), walk_kernel(), 10.0));
   const MeshReport report = expect_seeded_walk_mesh_is_dense(Skeleton(std::move(primitives)), 0.5, 2);
-  EXPECT_LE(report.seeds, 12u);
+  EXPECT_LE(report.seeds, 36u);
 }
 
 TEST(MeshScale, TheBoxAndSeedsFollowTheSkeletonScale) {

@@ -2,6 +2,7 @@
 #include "skelconv/mesh/surface_seeds.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <cstdint>
 #include <exception>
 #include <limits>
@@ -210,25 +211,53 @@ void check_some_surface(const SkeletonScan& scan, double iso) {
 }
 
 /// How far apart, in `spacing`s, two skeleton points inside may be and
-/// still be joined into one region (when the field between them is
-/// checked at every `spacing`): the points of one element, a few per
-/// element, lie farther apart than a fine spacing; much farther apart and
-/// the checks would cost as much as the rays they spare.
+/// still be joined into one region (when the grid's nodes between them are
+/// inside): the points of one element, a few per element, lie farther
+/// apart than a fine spacing; much farther apart and the checks would cost
+/// as much as the rays they spare.
 constexpr double region_link_reach = 4.0;
+
+/// The nodes of the grid of `spacing` from `origin` nearest to the points of
+/// the segment [p, q], from p's to q's, each a face neighbour of the one
+/// before (one axis at a time, x then y then z, where the nearest nodes
+/// of two points of the segment differ in more than one).
+std::vector<Cell> node_path(const Vec3& p, const Vec3& q, const Vec3& origin, double spacing) {
+  const auto node_of = [&](const Vec3& x) {
+    const Vec3 c = ((x - origin) / spacing).array().round();
+    return Cell{std::llround(c.x()), std::llround(c.y()), std::llround(c.z())};
+  };
+  // Points a quarter spacing apart: no node nearest the segment is skipped
+  // between two of them but by a step of more than one axis, filled in.
+  const int steps = std::max(1, int(std::ceil(4 * (q - p).norm() / spacing)));
+  std::vector<Cell> path{node_of(p)};
+  for (int n = 1; n <= steps; ++n) {
+    const Cell next = node_of(p + (double(n) / steps) * (q - p));
+    Cell at = path.back();
+    auto& [ai, aj, ak] = at;
+    const auto [ni, nj, nk] = next;
+    while (ai != ni) ai += ni > ai ? 1 : -1, path.push_back(at);
+    while (aj != nj) aj += nj > aj ? 1 : -1, path.push_back(at);
+    while (ak != nk) ak += nk > ak ? 1 : -1, path.push_back(at);
+  }
+  return path;
+}
 
 /// The region of every skeleton point inside (RegionSeeds), as the index of
 /// its first point; −1 outside. Each point inside is joined to the nearest
 /// earlier point inside within region_link_reach spacings (the lowest
-/// index among equals) when f ≥ iso also at points at most `spacing` apart
-/// on the segment between them: a gap between them thinner than that is
-/// thinner than the grid resolves, and a gap a check meets keeps them
-/// apart. The checks are evaluated on `threads` threads, each point's
-/// into its own slot. On a field infinite on its skeleton every point is
-/// a region of its own: f = +inf marks an inverse primitive's skeleton
-/// whatever its weight (docs/field.md), so f ≥ iso between two points does
-/// not show them in one piece (along a capsule carved on its axis, the
-/// carving's points would join the capsule's through its skeleton, and the
-/// rays from them that find the cavity would not be cast).
+/// index among equals) when f ≥ iso at every node of the grid (spacing
+/// `spacing` from box.lo, the grid method's) on a path of face neighbours
+/// from the node nearest one to the node nearest the other (node_path): the
+/// grid then has the two points in one piece, nodes inside joined by edges
+/// the surface does not cross. A piece thinner than the grid resolves
+/// (its nodes outside) keeps its points apart, each casting its rays, and
+/// so seeded, or reported missing. On a field infinite on its skeleton
+/// every point is a region of its own: f = +inf marks an inverse
+/// primitive's skeleton whatever its weight (docs/field.md), so f ≥ iso at
+/// the nodes between two points does not show them in one piece (along a
+/// capsule carved on its axis, the carving's points would join the
+/// capsule's, and the rays from them that find the cavity would not be
+/// cast).
 std::vector<std::int64_t> point_regions(const ImplicitField& field, double iso, const Box3& box,
                                         const SkeletonScan& scan, double spacing, unsigned threads) {
   const std::vector<Vec3>& points = field.skeleton_points;
@@ -259,32 +288,32 @@ std::vector<std::int64_t> point_regions(const ImplicitField& field, double iso, 
         }
     cells[{i, j, l}].push_back(k);
   }
-  const auto reaches = [&field, iso](const Vec3& q) {
-    return field.reaches ? field.reaches(q, iso) : field.value(q) >= iso;
-  };
-  std::vector<char> joined(points.size(), 0);
+  // Each link's grid nodes, then each node needed evaluated once, on
+  // `threads` threads into its own slot.
+  std::vector<std::vector<Cell>> paths(points.size());
+  std::map<Cell, std::size_t> node_index;
+  std::vector<Cell> nodes;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    if (nearest[k] < 0) continue;
+    paths[k] = node_path(points[std::size_t(nearest[k])], points[k], box.lo, spacing);
+    for (const Cell& node : paths[k])
+      if (node_index.emplace(node, nodes.size()).second) nodes.push_back(node);
+  }
+  std::vector<char> node_inside(nodes.size(), 0);
   detail::parallel_for(
-      points.size(),
-      [&](std::size_t k) {
-        if (nearest[k] < 0) return;
-        const Vec3& p = points[std::size_t(nearest[k])];
-        if (p == points[k]) {
-          joined[k] = 1;  // the same point (a vertex shared by two elements)
-          return;
-        }
-        // Where the field cannot be evaluated (next to an inverse
-        // primitive's skeleton) the points stay apart: each keeps its rays.
-        try {
-          // At least the midpoint, and points at most `spacing` apart.
-          const int pieces = std::max(2, int(std::ceil((p - points[k]).norm() / spacing)));
-          for (int n = 1; n < pieces; ++n)
-            if (!reaches(p + (double(n) / pieces) * (points[k] - p))) return;
-          joined[k] = 1;
-        } catch (const EvaluationError&) {
-          if (!field.infinite_on_skeleton) throw;
-        }
+      nodes.size(),
+      [&](std::size_t n) {
+        const auto [i, j, l] = nodes[n];
+        const Vec3 q = box.lo + spacing * Vec3(double(i), double(j), double(l));
+        node_inside[n] = field.reaches ? field.reaches(q, iso) : field.value(q) >= iso;
       },
       64, threads);
+  std::vector<char> joined(points.size(), 0);
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    if (nearest[k] < 0) continue;
+    joined[k] = std::all_of(paths[k].begin(), paths[k].end(),
+                            [&](const Cell& node) { return node_inside[node_index.at(node)] != 0; });
+  }
   std::vector<std::int64_t> region(points.size(), -1);
   for (std::size_t k = 0; k < points.size(); ++k) {
     if (!scan.inside[k]) continue;
