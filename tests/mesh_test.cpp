@@ -372,6 +372,33 @@ TEST(MeshSeeds, ASmallComponentFarFromAWalkIsStillMeshed) {
   EXPECT_LE(report.seeds, 36u);
 }
 
+TEST(MeshSeeds, ACavityOnlyADeferredSourcesRaysMeetIsMeshed) {
+  // A ball of radius 1 (f = 2 − |p|², iso 1) with a cavity around
+  // c = (0.3, 0.3, 0): f − 3 exp(−|p − c|²/0.01) < 1 within ~0.11 of c
+  // (3 e^(−d²/0.01) = 1 − |c|² at d = 0.114). The skeleton points along
+  // the x axis form one region; the rays of its first, (−0.5, 0, 0), miss
+  // the cavity, and the deferred sources, 0.5 or more from the ball's
+  // mesh, cast theirs after it: (0.3, 0, 0)'s along +y meets the cavity,
+  // whose seed no vertex is near, so the grid is sampled again from it.
+  // The mesh is the dense sampling's: the sphere and the cavity.
+  const Vec3 c(0.3, 0.3, 0.0);
+  ImplicitField field;
+  field.value = [c](const Vec3& p) { return 2.0 - p.squaredNorm() - 3.0 * std::exp(-(p - c).squaredNorm() / 0.01); };
+  field.value_and_gradient = [c](const Vec3& p) {
+    const double bump = 3.0 * std::exp(-(p - c).squaredNorm() / 0.01);
+    return FieldSample{2.0 - p.squaredNorm() - bump, -2.0 * p + bump * 2.0 * (p - c) / 0.01};
+  };
+  for (int k = -10; k <= 10; ++k) field.skeleton_points.push_back(Vec3(0.05 * k, 0.0, 0.0));
+  MeshOptions options = options_at(1.0, 0.05);
+  options.method = MeshMethod::grid;
+  const TriangleMesh seeded = mesh_iso_surface(field, options);
+  options.grid_from_seeds = false;
+  const TriangleMesh reference = mesh_iso_surface(field, options);
+  EXPECT_EQ(mesh_topology(seeded).components, 2u);
+  EXPECT_EQ(seeded.triangles, reference.triangles);
+  EXPECT_EQ(seeded.vertices, reference.vertices);
+}
+
 TEST(MeshScale, TheBoxAndSeedsFollowTheSkeletonScale) {
   // Nothing in the mesher has a length of its own: the box, the seeds and
   // the facet sizes follow the skeleton, so the same shape at scale α gives

@@ -261,13 +261,15 @@ std::vector<Cell> node_path(const Vec3& p, const Vec3& q, const Vec3& origin, do
 std::vector<std::int64_t> point_regions(const ImplicitField& field, double iso, const Box3& box,
                                         const SkeletonScan& scan, double spacing, unsigned threads) {
   const std::vector<Vec3>& points = field.skeleton_points;
-  std::vector<std::int64_t> nearest(points.size(), -1);
   if (field.infinite_on_skeleton) {
     std::vector<std::int64_t> region(points.size(), -1);
     for (std::size_t k = 0; k < points.size(); ++k)
       if (scan.inside[k]) region[k] = std::int64_t(k);
     return region;
   }
+  // Each point's nearest earlier point inside within reach, through a hash
+  // grid of cells `reach` wide.
+  std::vector<std::int64_t> nearest(points.size(), -1);
   const double reach = region_link_reach * spacing;
   std::map<Cell, std::vector<std::size_t>> cells;
   for (std::size_t k = 0; k < points.size(); ++k) {
