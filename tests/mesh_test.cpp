@@ -34,6 +34,7 @@
 #include "skelconv/mesh/surface_projection.hpp"
 #include "skelconv/mesh/surface_seeds.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
+#include "walk_skeleton.hpp"
 
 #ifndef SKELCONV_BINARY
 #error "SKELCONV_BINARY (path of the skelconv executable) is set by tests/CMakeLists.txt"
@@ -316,6 +317,86 @@ TEST(MeshSeeds, EvaluationErrorsSurfaceUnlessTheFieldIsInfiniteOnItsSkeleton) {
   EXPECT_THROW(surface_seeds(field, 1.0, box, options), EvaluationError);
   field.infinite_on_skeleton = true;  // the documented excuse: the other rays seed
   EXPECT_FALSE(surface_seeds(field, 1.0, box, options).empty());
+}
+
+/// bench/mesh_bench.cpp's walk of unit Cauchy segments (degree 4, s = 4)
+/// at its iso, f at 0.3 from the middle of a lone segment, meshed by the
+/// grid at `size` with and without the continuation from the seeds (the
+/// dense sampling, which needs no seed). Returns the seeded mesh's report.
+KernelSpec walk_kernel() {
+  KernelSpec kernel;
+  kernel.family = KernelFamily::cauchy;
+  kernel.degree = 4;
+  kernel.s = 4.0;
+  return kernel;
+}
+
+MeshReport expect_seeded_walk_mesh_is_dense(const Skeleton& skeleton, double size, std::size_t components) {
+  const Skeleton lone({Primitive(Segment(Vec3::Zero(), Vec3::UnitX(), walk_kernel(), {1.0}))});
+  MeshOptions options = options_at(lone.value(Vec3(0.5, 0.3, 0.0)), size);
+  options.method = MeshMethod::grid;
+  const ImplicitField field = skeleton_field(skeleton);
+  MeshReport report;
+  const TriangleMesh seeded = mesh_iso_surface(field, options, &report);
+  ImplicitField dense = field;
+  dense.enclosure = nullptr;
+  options.grid_from_seeds = false;
+  const TriangleMesh reference = mesh_iso_surface(dense, options);
+  EXPECT_EQ(mesh_topology(seeded).components, components);
+  EXPECT_EQ(seeded.triangles, reference.triangles);
+  EXPECT_EQ(seeded.vertices, reference.vertices);
+  return report;
+}
+
+TEST(MeshSeeds, AWalkInsideOneSurfaceIsSeededByTheRaysOfAFewSources) {
+  // The grid's continuation meshes a surface from any one seed on it, so
+  // the skeleton points joined through grid nodes inside the surface cast
+  // the rays of one of them (region_seeds): 60 segments of the bench's
+  // walk, one surface, seeded by a few sources' rays (those whose nearest
+  // grid node lies outside the tube, 0.35 thick, cast their own), where one
+  // source per voxel cast 380 seeds; the mesh is the dense sampling's all
+  // the same.
+  const Skeleton walk = walk_skeleton({60, 4, 4.0, {1.0}}, bench_walk_seed);
+  const MeshReport report = expect_seeded_walk_mesh_is_dense(walk, 0.5, 1);
+  EXPECT_LE(report.seeds, 30u);
+}
+
+TEST(MeshSeeds, ASmallComponentFarFromAWalkIsStillMeshed) {
+  // A Cauchy point of weight 10 six units beyond the walk's box, its blob
+  // (f ≥ iso within 0.51 of it: (1 + 16 r²)² = 10 / iso) a region of its
+  // own: its rays seed it, and the mesh has it.
+  const Skeleton walk = walk_skeleton({60, 4, 4.0, {1.0}}, bench_walk_seed);
+  std::vector<Primitive> primitives = walk.primitives();
+  primitives.emplace_back(PointPrimitive(Vec3(-6.0, -6.0, -6.0), walk_kernel(), 10.0));
+  const MeshReport report = expect_seeded_walk_mesh_is_dense(Skeleton(std::move(primitives)), 0.5, 2);
+  EXPECT_LE(report.seeds, 36u);
+}
+
+TEST(MeshSeeds, ACavityOnlyADeferredSourcesRaysMeetIsMeshed) {
+  // A ball of radius 1 (f = 2 − |p|², iso 1) with a cavity around
+  // c = (0.3, 0.3, 0): f − 3 exp(−|p − c|²/0.01) < 1 within ~0.11 of c
+  // (3 e^(−d²/0.01) = 1 − |c|² at d = 0.114). The skeleton points along
+  // the x axis form one region; the rays of its first, (−0.5, 0, 0), miss
+  // the cavity, and the deferred sources, 0.5 or more from the ball's
+  // mesh, cast theirs after it: (0.3, 0, 0)'s along +y meets the cavity,
+  // whose seed no vertex is near, so the grid is sampled again from it.
+  // The mesh is the dense sampling's: the sphere and the cavity.
+  const Vec3 c(0.3, 0.3, 0.0);
+  ImplicitField field;
+  field.value = [c](const Vec3& p) { return 2.0 - p.squaredNorm() - 3.0 * std::exp(-(p - c).squaredNorm() / 0.01); };
+  field.value_and_gradient = [c](const Vec3& p) {
+    const double bump = 3.0 * std::exp(-(p - c).squaredNorm() / 0.01);
+    return FieldSample{2.0 - p.squaredNorm() - bump, -2.0 * p + bump * 2.0 * (p - c) / 0.01};
+  };
+  for (int k = -10; k <= 10; ++k) field.skeleton_points.push_back(Vec3(0.05 * k, 0.0, 0.0));
+  MeshOptions options = options_at(1.0, 0.05);
+  options.method = MeshMethod::grid;
+  const TriangleMesh seeded = mesh_iso_surface(field, options);
+  options.grid_from_seeds = false;
+  const TriangleMesh reference = mesh_iso_surface(field, options);
+  EXPECT_EQ(mesh_topology(seeded).components, 2u);
+  EXPECT_EQ(seeded.triangles, reference.triangles);
+  EXPECT_EQ(seeded.vertices, reference.vertices);
 }
 
 TEST(MeshScale, TheBoxAndSeedsFollowTheSkeletonScale) {

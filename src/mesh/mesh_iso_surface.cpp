@@ -304,6 +304,39 @@ std::function<std::function<double(const Vec3&)>(const Vec3&, double)> grid_leve
 /// every --size).
 constexpr double seed_coverage_reach = 4.0;
 
+/// A mesh's vertices in a hash grid of cells `reach` wide, to ask whether
+/// one lies within `reach` of a point.
+class NearVertices {
+ public:
+  NearVertices(const std::vector<Vec3>& vertices, double reach) : vertices_(vertices), reach_(reach) {
+    for (std::size_t v = 0; v < vertices.size(); ++v) cells_[cell_of(vertices[v])].push_back(v);
+  }
+
+  bool near(const Vec3& p) const {
+    const Cell c = cell_of(p);
+    for (long long i = c[0] - 1; i <= c[0] + 1; ++i)
+      for (long long j = c[1] - 1; j <= c[1] + 1; ++j)
+        for (long long k = c[2] - 1; k <= c[2] + 1; ++k) {
+          const auto found = cells_.find({i, j, k});
+          if (found == cells_.end()) continue;
+          for (const std::size_t v : found->second)
+            if ((vertices_[v] - p).norm() <= reach_) return true;
+        }
+    return false;
+  }
+
+ private:
+  using Cell = std::array<long long, 3>;
+  Cell cell_of(const Vec3& p) const {
+    return {std::llround(std::floor(p.x() / reach_)), std::llround(std::floor(p.y() / reach_)),
+            std::llround(std::floor(p.z() / reach_))};
+  }
+
+  const std::vector<Vec3>& vertices_;
+  double reach_;
+  std::map<Cell, std::vector<std::size_t>> cells_;
+};
+
 /// The parts of the surface no vertex of the grid mesh is near: the seeds
 /// without a vertex within seed_coverage_reach spacings, grouped by
 /// proximity (seeds within the same reach of a group's first seed), thickest
@@ -311,25 +344,8 @@ constexpr double seed_coverage_reach = 4.0;
 /// OpenVDB's volumeToMesh makes nothing of it, without a word.
 std::vector<MissedPart> find_missed_parts(const TriangleMesh& mesh, const std::vector<Vec3>& seeds, double spacing) {
   const double reach = seed_coverage_reach * spacing;
-  using Cell = std::array<long long, 3>;
-  const auto cell_of = [reach](const Vec3& p) {
-    return Cell{std::llround(std::floor(p.x() / reach)), std::llround(std::floor(p.y() / reach)),
-                std::llround(std::floor(p.z() / reach))};
-  };
-  std::map<Cell, std::vector<std::size_t>> cells;
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) cells[cell_of(mesh.vertices[v])].push_back(v);
-  const auto covered = [&](const Vec3& seed) {
-    const Cell c = cell_of(seed);
-    for (long long i = c[0] - 1; i <= c[0] + 1; ++i)
-      for (long long j = c[1] - 1; j <= c[1] + 1; ++j)
-        for (long long k = c[2] - 1; k <= c[2] + 1; ++k) {
-          const auto found = cells.find({i, j, k});
-          if (found == cells.end()) continue;
-          for (const std::size_t v : found->second)
-            if ((mesh.vertices[v] - seed).norm() <= reach) return true;
-        }
-    return false;
-  };
+  const NearVertices vertices(mesh.vertices, reach);
+  const auto covered = [&vertices](const Vec3& seed) { return vertices.near(seed); };
   struct Group {
     Vec3 first, sum = Vec3::Zero();
     Box3 box;
@@ -411,33 +427,43 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
   // CGAL's refinement starts from the seeds themselves. On a dense skeleton
   // the bisection to 1e-4 of a voxel was half the grid method's time.
   const unsigned threads = options.threads == 0 ? detail::parallel_threads() : options.threads;
-  const std::vector<Vec3> seeds =
-      surface_seeds(metered, iso, run.box,
-                    {.spacing = run.size,
-                     .bracket_fraction = options.method == MeshMethod::grid && options.grid_from_seeds
-                                             ? grid_seed_bracket
-                                             : SurfaceSeedOptions{}.bracket_fraction,
-                     .threads = threads});
+  // The grid's continuation meshes a whole surface from any one seed on it:
+  // one ray source per region of the skeleton (region_seeds) instead of
+  // one per voxel, the others deferred to after the mesh (below).
+  const bool from_seeds = options.method == MeshMethod::grid && options.grid_from_seeds;
+  const SurfaceSeedOptions seed_options{
+      .spacing = run.size,
+      .bracket_fraction = from_seeds ? grid_seed_bracket : SurfaceSeedOptions{}.bracket_fraction,
+      .threads = threads};
+  RegionSeeds found = from_seeds ? region_seeds(metered, iso, run.box, seed_options)
+                                 : RegionSeeds{.seeds = surface_seeds(metered, iso, run.box, seed_options), .deferred = {}};
+  std::vector<Vec3> seeds = std::move(found.seeds);
+  if (seeds.empty() && !found.deferred.empty()) {
+    // No ray of the regions' first sources found a crossing: the others
+    // try, as surface_seeds would have.
+    seeds = seeds_from_points(metered, iso, run.box, found.deferred, {}, seed_options);
+    found.deferred.clear();
+  }
   if (seeds.empty()) {
     throw EvaluationError(fmt::format("no surface point found by the rays from the skeleton at iso {}", iso));
   }
-  run.seeds = seeds.size();
 
   const Clock::time_point refine_start = Clock::now();
   meter.report_progress(true);
   const auto level = [&metered, iso](const Vec3& p) { return iso - metered.value(p); };
+  const auto grid_mesh = [&](const std::vector<Vec3>& from) {
+    return detail::grid_surface_mesh({.level = grid_level(metered, iso, run.size),
+                                      .level_near = grid_level_near(metered, iso, run.size),
+                                      .box = run.box,
+                                      .voxel = run.size,
+                                      .support_boxes = field.support_boxes ? &*field.support_boxes : nullptr,
+                                      .empty_level = iso - 0.0,  // level(p) where f(p) = 0
+                                      .sign_over = level_sign(metered, iso),
+                                      .seeds = options.grid_from_seeds ? from : std::vector<Vec3>{},
+                                      .threads = threads});
+  };
   TriangleMesh mesh = options.method == MeshMethod::grid
-                          ? detail::grid_surface_mesh({.level = grid_level(metered, iso, run.size),
-                                                       .level_near = grid_level_near(metered, iso, run.size),
-                                                       .box = run.box,
-                                                       .voxel = run.size,
-                                                       .support_boxes = field.support_boxes ? &*field.support_boxes
-                                                                                            : nullptr,
-                                                       .empty_level = iso - 0.0,  // level(p) where f(p) = 0
-                                                       .sign_over = level_sign(metered, iso),
-                                                       .seeds = options.grid_from_seeds ? seeds
-                                                                                        : std::vector<Vec3>{},
-                                                       .threads = threads})
+                          ? grid_mesh(seeds)
                           : detail::cgal_surface_mesh({
                                 .level = level,
                                 .box = run.box,
@@ -448,6 +474,23 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
                                 .relative_error_bound = run.distance / accuracy_divisor / run.box.diagonal(),
                                 .random_seed = options.random_seed,
                             });
+  if (!found.deferred.empty()) {
+    // A deferred source with no vertex near it may lie in a part the
+    // regions' first rays did not reach (a cavity, a piece the grid did not
+    // resolve): such sources cast their rays now. If one of their seeds
+    // has no vertex near it either, the grid is sampled again from every
+    // seed, so that a part the grid resolves is meshed, and one it does not
+    // is reported (missed_parts), as if every source had cast its rays.
+    const NearVertices near(mesh.vertices, seed_coverage_reach * run.size);
+    std::vector<Vec3> far;
+    for (const Vec3& p : found.deferred)
+      if (!near.near(p)) far.push_back(p);
+    const std::vector<Vec3> more = seeds_from_points(metered, iso, run.box, far, seeds, seed_options);
+    seeds.insert(seeds.end(), more.begin(), more.end());
+    if (std::any_of(more.begin(), more.end(), [&near](const Vec3& q) { return !near.near(q); }))
+      mesh = grid_mesh(seeds);
+  }
+  run.seeds = seeds.size();
   meter.report_progress(false);
   run.refine_seconds = seconds_since(refine_start);
   if (mesh.triangles.empty() && options.method == MeshMethod::grid) {

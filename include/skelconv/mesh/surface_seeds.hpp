@@ -46,4 +46,34 @@ struct SurfaceSeedOptions {
 std::vector<Vec3> surface_seeds(const ImplicitField& field, double iso, const Box3& box,
                                 const SurfaceSeedOptions& options);
 
+/// Seeds for a mesher that follows a surface from any one point of it (the
+/// grid method's continuation), where the rays of every skeleton point
+/// would mostly land on surfaces an earlier point's rays already seeded.
+/// The skeleton points where f > iso are joined into regions: each to its
+/// nearest earlier such point within 4 `spacing`s when f ≥ iso at every
+/// node of the grid (spacing `spacing` from box.lo, the grid method's) on
+/// a path of face neighbours between their nearest nodes: the same piece
+/// of the grid's inside (not for a field infinite on its skeleton, whose
+/// markers f = +inf say nothing of the pieces). Only the first ray source
+/// of each region (surface_seeds' thinning) casts its six rays; the
+/// region's other sources are `deferred`: their rays would start inside a
+/// piece already seeded. The mesher casts them (seeds_from_points) where
+/// the mesh it made has no vertex near them, so that a part the region's
+/// first rays did not reach (a cavity) is still seeded.
+struct RegionSeeds {
+  std::vector<Vec3> seeds;
+  std::vector<Vec3> deferred;
+};
+
+/// As surface_seeds, the same checks and errors, with one ray source per
+/// region (RegionSeeds).
+RegionSeeds region_seeds(const ImplicitField& field, double iso, const Box3& box, const SurfaceSeedOptions& options);
+
+/// The crossings of the six rays from each of `points` (f > iso at each),
+/// dropping those within `separation` × `spacing` of `existing` or of a
+/// crossing of an earlier point, as surface_seeds does.
+std::vector<Vec3> seeds_from_points(const ImplicitField& field, double iso, const Box3& box,
+                                    const std::vector<Vec3>& points, const std::vector<Vec3>& existing,
+                                    const SurfaceSeedOptions& options);
+
 }  // namespace skelconv
