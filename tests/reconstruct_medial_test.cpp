@@ -412,6 +412,29 @@ TEST(MedialMesh, BudgetIsRespected) {
   }
 }
 
+TEST(MedialMesh, ATrianglesRadiusIsTheGeometricMeanOfItsSpheres) {
+  // A fan from a thick sphere (radius 0.8) to two thin ones (0.1), as a
+  // body's sheet runs out to a thin part lying against it: the SCALIS
+  // triangle's one radius is ∛(0.8 × 0.1 × 0.1) = ∛0.008 = 0.2, twice the
+  // thin corners' (the arithmetic mean, 1/3, would be 3.3 times theirs).
+  // Equal radii give that radius.
+  ReconstructOptions o;
+  o.method = SkeletonMethod::medial;
+  const auto written_radii = [&o](const std::vector<Vec4>& spheres) {
+    Stage s;
+    s.name = "medial";
+    s.medial.spheres = spheres;
+    s.medial.triangles = {{0, 1, 2}};
+    const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(s, o));
+    EXPECT_EQ(skeleton.primitives().size(), 1u);
+    return std::get<ScalisTriangle>(skeleton.primitives().at(0)).radii();
+  };
+  for (const double r : written_radii({Vec4(0, 0, 0, 0.8), Vec4(1, -0.1, 0, 0.1), Vec4(1, 0.1, 0, 0.1)}))
+    EXPECT_NEAR(r, 0.2, 1e-15);
+  for (const double r : written_radii({Vec4(0, 0, 0, 0.3), Vec4(1, -0.1, 0, 0.3), Vec4(1, 0.1, 0, 0.3)}))
+    EXPECT_NEAR(r, 0.3, 1e-15);
+}
+
 TEST(MedialMesh, SameInputSameBytesInOneProcess) {
   // The command runs the path once per process, the Python module many
   // times in one: the second run must not see anything the first left.

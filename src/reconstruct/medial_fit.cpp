@@ -221,7 +221,11 @@ Jacobian jacobian(const FitPoints& fit_points, const Evaluation& e, bool centres
       } else if (q < mesh.edges.size() + mesh.triangles.size()) {
         const auto& triangle = mesh.triangles[q - mesh.edges.size()];
         const PrimitiveDerivatives<3> d = derivatives(std::get<ScalisTriangle>(primitives[q]), p);
-        for (std::size_t v = 0; v < 3; ++v) add(k, triangle[v], d.vertex[v], d.radius[0] / 3.0);
+        // Its one radius τ is the geometric mean of its spheres'
+        // (triangle_radius): ∂τ/∂r_v = τ / (3 r_v).
+        const double tau = std::get<ScalisTriangle>(primitives[q]).radii()[0];
+        for (std::size_t v = 0; v < 3; ++v)
+          add(k, triangle[v], d.vertex[v], d.radius[0] / 3.0 * (tau / mesh.spheres[std::size_t(triangle[v])].w()));
       } else {
         const std::int32_t sphere = mesh.isolated[q - mesh.edges.size() - mesh.triangles.size()];
         const PrimitiveDerivatives<1> d =
