@@ -412,15 +412,17 @@ TEST(MedialMesh, BudgetIsRespected) {
   }
 }
 
-TEST(MedialMesh, ATrianglesRadiusIsTheGeometricMeanOfItsSpheres) {
+TEST(MedialMesh, ATrianglesRadiusIsTheMeanOfItsSpheresOrTheirGeometricMean) {
   // A fan from a thick sphere (radius 0.8) to two thin ones (0.1), as a
-  // body's sheet runs out to a thin part lying against it: the SCALIS
-  // triangle's one radius is ∛(0.8 × 0.1 × 0.1) = ∛0.008 = 0.2, twice the
-  // thin corners' (the arithmetic mean, 1/3, would be 3.3 times theirs).
-  // Equal radii give that radius.
-  ReconstructOptions o;
-  o.method = SkeletonMethod::medial;
-  const auto written_radii = [&o](const std::vector<Vec4>& spheres) {
+  // body's sheet runs out to a thin part lying against it. The SCALIS
+  // triangle's one radius: by default the arithmetic mean, (0.8 + 0.1 +
+  // 0.1) / 3 = 1/3, 3.3 times the thin corners'; with
+  // geometric_triangle_radius ∛(0.8 × 0.1 × 0.1) = ∛0.008 = 0.2, twice
+  // theirs. Equal radii give that radius either way.
+  const auto written_radii = [](const std::vector<Vec4>& spheres, bool geometric) {
+    ReconstructOptions o;
+    o.method = SkeletonMethod::medial;
+    o.medial.geometric_triangle_radius = geometric;
     Stage s;
     s.name = "medial";
     s.medial.spheres = spheres;
@@ -429,10 +431,12 @@ TEST(MedialMesh, ATrianglesRadiusIsTheGeometricMeanOfItsSpheres) {
     EXPECT_EQ(skeleton.primitives().size(), 1u);
     return std::get<ScalisTriangle>(skeleton.primitives().at(0)).radii();
   };
-  for (const double r : written_radii({Vec4(0, 0, 0, 0.8), Vec4(1, -0.1, 0, 0.1), Vec4(1, 0.1, 0, 0.1)}))
-    EXPECT_NEAR(r, 0.2, 1e-15);
-  for (const double r : written_radii({Vec4(0, 0, 0, 0.3), Vec4(1, -0.1, 0, 0.3), Vec4(1, 0.1, 0, 0.3)}))
-    EXPECT_NEAR(r, 0.3, 1e-15);
+  const std::vector<Vec4> fan{Vec4(0, 0, 0, 0.8), Vec4(1, -0.1, 0, 0.1), Vec4(1, 0.1, 0, 0.1)};
+  const std::vector<Vec4> even{Vec4(0, 0, 0, 0.3), Vec4(1, -0.1, 0, 0.3), Vec4(1, 0.1, 0, 0.3)};
+  for (const double r : written_radii(fan, false)) EXPECT_NEAR(r, 1.0 / 3.0, 1e-15);
+  for (const double r : written_radii(fan, true)) EXPECT_NEAR(r, 0.2, 1e-15);
+  for (const bool geometric : {false, true})
+    for (const double r : written_radii(even, geometric)) EXPECT_NEAR(r, 0.3, 1e-15);
 }
 
 TEST(MedialMesh, SameInputSameBytesInOneProcess) {

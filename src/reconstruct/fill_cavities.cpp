@@ -101,7 +101,7 @@ std::size_t drop_smallest_primitives(reconstruct::MedialMesh& mesh, std::size_t 
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
       const auto& t = mesh.triangles[i];
       if (uses[std::size_t(t[0])] < 2 || uses[std::size_t(t[1])] < 2 || uses[std::size_t(t[2])] < 2) continue;
-      const double r = sigma * reconstruct::triangle_radius(radius(t[0]), radius(t[1]), radius(t[2]));
+      const double r = sigma * (radius(t[0]) + radius(t[1]) + radius(t[2])) / 3.0;
       const Vec3 a = centre(t[0]), b = centre(t[1]), c = centre(t[2]);
       const double area = 0.5 * (b - a).cross(c - a).norm();
       const double perimeter = (b - a).norm() + (c - b).norm() + (a - c).norm();

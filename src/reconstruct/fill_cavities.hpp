@@ -37,8 +37,8 @@ std::vector<reconstruct::Vec4> spurious_cavities(const TriangleMesh& meshed,
 
 /// Room for `count` more primitives within the budget: drops the `count`
 /// tube edges or triangles of `mesh` with the smallest supports (the
-/// Minkowski sum of the primitive and a ball of σ × its radius: a tube
-/// edge's mean radius, a triangle's triangle_radius; σ = `sigma`) among those whose every sphere another primitive still uses, so
+/// Minkowski sum of the primitive and a ball of σ × its mean radius, σ =
+/// `sigma`) among those whose every sphere another primitive still uses, so
 /// that no sphere is left without a primitive and the spheres' indices
 /// stay. The smallest support is the least field taken away; the caller
 /// meshes again to see that the topology came no farther from the
