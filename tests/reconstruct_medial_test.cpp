@@ -412,6 +412,33 @@ TEST(MedialMesh, BudgetIsRespected) {
   }
 }
 
+TEST(MedialMesh, ATrianglesRadiusIsTheMeanOfItsSpheresOrTheirGeometricMean) {
+  // A fan from a thick sphere (radius 0.8) to two thin ones (0.1), as a
+  // body's sheet runs out to a thin part lying against it. The SCALIS
+  // triangle's one radius: by default the arithmetic mean, (0.8 + 0.1 +
+  // 0.1) / 3 = 1/3, 3.3 times the thin corners'; with
+  // geometric_triangle_radius ∛(0.8 × 0.1 × 0.1) = ∛0.008 = 0.2, twice
+  // theirs. Equal radii give that radius either way.
+  const auto written_radii = [](const std::vector<Vec4>& spheres, bool geometric) {
+    ReconstructOptions o;
+    o.method = SkeletonMethod::medial;
+    o.medial.geometric_triangle_radius = geometric;
+    Stage s;
+    s.name = "medial";
+    s.medial.spheres = spheres;
+    s.medial.triangles = {{0, 1, 2}};
+    const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(s, o));
+    EXPECT_EQ(skeleton.primitives().size(), 1u);
+    return std::get<ScalisTriangle>(skeleton.primitives().at(0)).radii();
+  };
+  const std::vector<Vec4> fan{Vec4(0, 0, 0, 0.8), Vec4(1, -0.1, 0, 0.1), Vec4(1, 0.1, 0, 0.1)};
+  const std::vector<Vec4> even{Vec4(0, 0, 0, 0.3), Vec4(1, -0.1, 0, 0.3), Vec4(1, 0.1, 0, 0.3)};
+  for (const double r : written_radii(fan, false)) EXPECT_NEAR(r, 1.0 / 3.0, 1e-15);
+  for (const double r : written_radii(fan, true)) EXPECT_NEAR(r, 0.2, 1e-15);
+  for (const bool geometric : {false, true})
+    for (const double r : written_radii(even, geometric)) EXPECT_NEAR(r, 0.3, 1e-15);
+}
+
 TEST(MedialMesh, SameInputSameBytesInOneProcess) {
   // The command runs the path once per process, the Python module many
   // times in one: the second run must not see anything the first left.
