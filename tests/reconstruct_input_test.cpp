@@ -193,9 +193,17 @@ TEST(BallFit, EachFaceOfAThinSlabKeepsItsOwnPoints) {
   for (std::size_t f = 0; f < 6; ++f) EXPECT_NEAR(grouped[f], expected[f], 1e-12) << "face " << f;
   // By cell alone: the top and the bottom do not keep their areas (the
   // total, 2.4, is kept).
-  const std::array<double, 6> by_cell = face_areas(merged_in_cells(area_weighted_points(slab, h), h, true));
+  const std::vector<WeightedPoint> one_per_cell = merged_in_cells(area_weighted_points(slab, h), h, true);
+  const std::array<double, 6> by_cell = face_areas(one_per_cell);
   EXPECT_GT(std::abs(by_cell[5] - 1.0), 0.1);
   EXPECT_NEAR(std::accumulate(by_cell.begin(), by_cell.end(), 0.0), 2.4, 1e-12);
+  // At π every face of a cell is one group: the points merged by cell.
+  const std::vector<WeightedPoint> at_pi = surface_points_in_cells(slab, h, std::numbers::pi);
+  ASSERT_EQ(at_pi.size(), one_per_cell.size());
+  for (std::size_t k = 0; k < at_pi.size(); ++k) {
+    EXPECT_EQ(at_pi[k].point, one_per_cell[k].point);
+    EXPECT_EQ(at_pi[k].weight, one_per_cell[k].weight);
+  }
   // A flat surface has one facing: grouped or not, the same points.
   TriangleMesh square;
   square.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};

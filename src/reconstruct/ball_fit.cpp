@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <numbers>
 
 #include <Eigen/Dense>
 
@@ -142,7 +143,10 @@ std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& poi
 }
 
 std::vector<WeightedPoint> surface_points_in_cells(const TriangleMesh& mesh, double h, double facing_angle) {
-  const double least_cosine = std::cos(facing_angle);
+  // At π or more every point joins the cell's first group (a rounded cosine
+  // of two opposite normals may fall just below −1).
+  const double least_cosine =
+      facing_angle >= std::numbers::pi ? -std::numeric_limits<double>::infinity() : std::cos(facing_angle);
   std::vector<WeightedPoint> points;
   std::vector<CellKey> keys;
   // Per cell, the unit normal of each group's first triangle.
