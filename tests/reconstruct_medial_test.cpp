@@ -415,10 +415,10 @@ TEST(MedialMesh, BudgetIsRespected) {
 TEST(MedialMesh, ATrianglesRadiusIsTheMeanOfItsSpheresOrTheirGeometricMean) {
   // A fan from a thick sphere (radius 0.8) to two thin ones (0.1), as a
   // body's sheet runs out to a thin part lying against it. The SCALIS
-  // triangle's one radius: by default the arithmetic mean, (0.8 + 0.1 +
-  // 0.1) / 3 = 1/3, 3.3 times the thin corners'; with the geometric rule
-  // ∛(0.8 × 0.1 × 0.1) = ∛0.008 = 0.2, twice
-  // theirs. Equal radii give that radius either way.
+  // triangle's one radius: with the arithmetic rule (--medial-arithmetic-
+  // triangle-radius) (0.8 + 0.1 + 0.1) / 3 = 1/3, 3.3 times the thin
+  // corners'; with the geometric rule ∛(0.8 × 0.1 × 0.1) = ∛0.008 = 0.2,
+  // twice theirs. Equal radii give that radius either way.
   const auto written_radii = [](const std::vector<Vec4>& spheres, bool geometric) {
     ReconstructOptions o;
     o.method = SkeletonMethod::medial;
@@ -484,6 +484,27 @@ TEST(MedialMesh, AFanBlendsTheMeansByHowUnequalItsRadiiAre) {
   ASSERT_EQ(skeleton.primitives().size(), 1u);
   for (const double r : std::get<ScalisTriangle>(skeleton.primitives().at(0)).radii())
     EXPECT_NEAR(r, between.tau, 1e-15);
+}
+
+TEST(MedialMesh, ByDefaultOnlyTheSteepestFansTakeTheGeometricMean) {
+  // The default rule blends from q = A / G = 2 to 2.5 (A the arithmetic
+  // mean, G the geometric):
+  // - 0.64, 0.01, 0.01: A = 0.66 / 3 = 0.22, G = ∛(6.4e−5) = 0.04,
+  //   q = 5.5: the geometric mean, 0.04;
+  // - 0.8, 0.1, 0.1: A = 1/3, G = 0.2, q = 5/3 < 2: the arithmetic, 1/3.
+  const auto written_radius = [](const std::vector<Vec4>& spheres) {
+    ReconstructOptions o;
+    o.method = SkeletonMethod::medial;
+    Stage s;
+    s.name = "medial";
+    s.medial.spheres = spheres;
+    s.medial.triangles = {{0, 1, 2}};
+    const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(s, o));
+    EXPECT_EQ(skeleton.primitives().size(), 1u);
+    return std::get<ScalisTriangle>(skeleton.primitives().at(0)).radii()[0];
+  };
+  EXPECT_NEAR(written_radius({Vec4(0, 0, 0, 0.64), Vec4(1, -0.1, 0, 0.01), Vec4(1, 0.1, 0, 0.01)}), 0.04, 1e-15);
+  EXPECT_NEAR(written_radius({Vec4(0, 0, 0, 0.8), Vec4(1, -0.1, 0, 0.1), Vec4(1, 0.1, 0, 0.1)}), 1.0 / 3.0, 1e-15);
 }
 
 TEST(MedialMesh, SameInputSameBytesInOneProcess) {

@@ -146,9 +146,11 @@ struct MedialOptions {
   /// to 1.97% (docs/reconstruction_medial.md, "What limits it").
   bool grow_within_input = false;
   /// How each medial triangle's SCALIS triangle takes its one radius from
-  /// its spheres' (medial_mesh.hpp, triangle_radius; `skeletonize
+  /// its spheres' (medial_mesh.hpp, triangle_radius): by default the
+  /// arithmetic mean, the geometric where the radii differ most (a fan from
+  /// a thick part into a thin one); `skeletonize
   /// --medial-geometric-triangle-radius` takes the geometric mean
-  /// everywhere).
+  /// everywhere, `--medial-arithmetic-triangle-radius` the arithmetic.
   TriangleRadiusRule triangle_radius;
   /// Where the fitted result has more tunnels than the input, the medial
   /// mesh is simplified again with every loop of three edges closed whose
