@@ -412,6 +412,21 @@ TEST(MedialMesh, BudgetIsRespected) {
   }
 }
 
+/// The radii written for the one triangle of `spheres` (three spheres) by
+/// the medial path's skeleton file, with `rule`.
+std::array<double, 3> written_triangle_radii(const std::vector<Vec4>& spheres, const TriangleRadiusRule& rule) {
+  ReconstructOptions o;
+  o.method = SkeletonMethod::medial;
+  o.medial.triangle_radius = rule;
+  Stage s;
+  s.name = "medial";
+  s.medial.spheres = spheres;
+  s.medial.triangles = {{0, 1, 2}};
+  const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(s, o));
+  EXPECT_EQ(skeleton.primitives().size(), 1u);
+  return std::get<ScalisTriangle>(skeleton.primitives().at(0)).radii();
+}
+
 TEST(MedialMesh, ATrianglesRadiusIsTheMeanOfItsSpheresOrTheirGeometricMean) {
   // A fan from a thick sphere (radius 0.8) to two thin ones (0.1), as a
   // body's sheet runs out to a thin part lying against it. The SCALIS
@@ -420,16 +435,8 @@ TEST(MedialMesh, ATrianglesRadiusIsTheMeanOfItsSpheresOrTheirGeometricMean) {
   // corners'; with the geometric rule ∛(0.8 × 0.1 × 0.1) = ∛0.008 = 0.2,
   // twice theirs. Equal radii give that radius either way.
   const auto written_radii = [](const std::vector<Vec4>& spheres, bool geometric) {
-    ReconstructOptions o;
-    o.method = SkeletonMethod::medial;
-    o.medial.triangle_radius = geometric ? TriangleRadiusRule::geometric() : TriangleRadiusRule::arithmetic();
-    Stage s;
-    s.name = "medial";
-    s.medial.spheres = spheres;
-    s.medial.triangles = {{0, 1, 2}};
-    const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(s, o));
-    EXPECT_EQ(skeleton.primitives().size(), 1u);
-    return std::get<ScalisTriangle>(skeleton.primitives().at(0)).radii();
+    return written_triangle_radii(spheres,
+                                  geometric ? TriangleRadiusRule::geometric() : TriangleRadiusRule::arithmetic());
   };
   const std::vector<Vec4> fan{Vec4(0, 0, 0, 0.8), Vec4(1, -0.1, 0, 0.1), Vec4(1, 0.1, 0, 0.1)};
   const std::vector<Vec4> even{Vec4(0, 0, 0, 0.3), Vec4(1, -0.1, 0, 0.3), Vec4(1, 0.1, 0, 0.3)};
@@ -473,16 +480,8 @@ TEST(MedialMesh, AFanBlendsTheMeansByHowUnequalItsRadiiAre) {
     EXPECT_NEAR(between.thirds[v] / 3, difference, 1e-8) << "sphere " << v;
   }
   // The written skeleton takes τ by the option's rule.
-  ReconstructOptions o;
-  o.method = SkeletonMethod::medial;
-  o.medial.triangle_radius = rule;
-  Stage s;
-  s.name = "medial";
-  s.medial.spheres = {Vec4(0, 0, 0, 0.125), Vec4(1, -0.1, 0, 1.0), Vec4(1, 0.1, 0, 1.0)};
-  s.medial.triangles = {{0, 1, 2}};
-  const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(s, o));
-  ASSERT_EQ(skeleton.primitives().size(), 1u);
-  for (const double r : std::get<ScalisTriangle>(skeleton.primitives().at(0)).radii())
+  for (const double r :
+       written_triangle_radii({Vec4(0, 0, 0, 0.125), Vec4(1, -0.1, 0, 1.0), Vec4(1, 0.1, 0, 1.0)}, rule))
     EXPECT_NEAR(r, between.tau, 1e-15);
 }
 
@@ -493,15 +492,7 @@ TEST(MedialMesh, ByDefaultOnlyTheSteepestFansTakeTheGeometricMean) {
   //   q = 5.5: the geometric mean, 0.04;
   // - 0.8, 0.1, 0.1: A = 1/3, G = 0.2, q = 5/3 < 2: the arithmetic, 1/3.
   const auto written_radius = [](const std::vector<Vec4>& spheres) {
-    ReconstructOptions o;
-    o.method = SkeletonMethod::medial;
-    Stage s;
-    s.name = "medial";
-    s.medial.spheres = spheres;
-    s.medial.triangles = {{0, 1, 2}};
-    const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(s, o));
-    EXPECT_EQ(skeleton.primitives().size(), 1u);
-    return std::get<ScalisTriangle>(skeleton.primitives().at(0)).radii()[0];
+    return written_triangle_radii(spheres, ReconstructOptions{}.medial.triangle_radius)[0];
   };
   EXPECT_NEAR(written_radius({Vec4(0, 0, 0, 0.64), Vec4(1, -0.1, 0, 0.01), Vec4(1, 0.1, 0, 0.01)}), 0.04, 1e-15);
   EXPECT_NEAR(written_radius({Vec4(0, 0, 0, 0.8), Vec4(1, -0.1, 0, 0.1), Vec4(1, 0.1, 0, 0.1)}), 1.0 / 3.0, 1e-15);
