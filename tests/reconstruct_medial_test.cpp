@@ -412,24 +412,31 @@ TEST(MedialMesh, BudgetIsRespected) {
   }
 }
 
+/// The radii written for the one triangle of `spheres` (three spheres) by
+/// the medial path's skeleton file, with `rule`.
+std::array<double, 3> written_triangle_radii(const std::vector<Vec4>& spheres, const TriangleRadiusRule& rule) {
+  ReconstructOptions o;
+  o.method = SkeletonMethod::medial;
+  o.medial.triangle_radius = rule;
+  Stage s;
+  s.name = "medial";
+  s.medial.spheres = spheres;
+  s.medial.triangles = {{0, 1, 2}};
+  const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(s, o));
+  EXPECT_EQ(skeleton.primitives().size(), 1u);
+  return std::get<ScalisTriangle>(skeleton.primitives().at(0)).radii();
+}
+
 TEST(MedialMesh, ATrianglesRadiusIsTheMeanOfItsSpheresOrTheirGeometricMean) {
   // A fan from a thick sphere (radius 0.8) to two thin ones (0.1), as a
   // body's sheet runs out to a thin part lying against it. The SCALIS
-  // triangle's one radius: by default the arithmetic mean, (0.8 + 0.1 +
-  // 0.1) / 3 = 1/3, 3.3 times the thin corners'; with
-  // geometric_triangle_radius ∛(0.8 × 0.1 × 0.1) = ∛0.008 = 0.2, twice
-  // theirs. Equal radii give that radius either way.
+  // triangle's one radius: with the arithmetic rule (--medial-arithmetic-
+  // triangle-radius) (0.8 + 0.1 + 0.1) / 3 = 1/3, 3.3 times the thin
+  // corners'; with the geometric rule ∛(0.8 × 0.1 × 0.1) = ∛0.008 = 0.2,
+  // twice theirs. Equal radii give that radius either way.
   const auto written_radii = [](const std::vector<Vec4>& spheres, bool geometric) {
-    ReconstructOptions o;
-    o.method = SkeletonMethod::medial;
-    o.medial.geometric_triangle_radius = geometric;
-    Stage s;
-    s.name = "medial";
-    s.medial.spheres = spheres;
-    s.medial.triangles = {{0, 1, 2}};
-    const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(s, o));
-    EXPECT_EQ(skeleton.primitives().size(), 1u);
-    return std::get<ScalisTriangle>(skeleton.primitives().at(0)).radii();
+    return written_triangle_radii(spheres,
+                                  geometric ? TriangleRadiusRule::geometric() : TriangleRadiusRule::arithmetic());
   };
   const std::vector<Vec4> fan{Vec4(0, 0, 0, 0.8), Vec4(1, -0.1, 0, 0.1), Vec4(1, 0.1, 0, 0.1)};
   const std::vector<Vec4> even{Vec4(0, 0, 0, 0.3), Vec4(1, -0.1, 0, 0.3), Vec4(1, 0.1, 0, 0.3)};
@@ -437,6 +444,58 @@ TEST(MedialMesh, ATrianglesRadiusIsTheMeanOfItsSpheresOrTheirGeometricMean) {
   for (const double r : written_radii(fan, true)) EXPECT_NEAR(r, 0.2, 1e-15);
   for (const bool geometric : {false, true})
     for (const double r : written_radii(even, geometric)) EXPECT_NEAR(r, 0.3, 1e-15);
+}
+
+TEST(MedialMesh, AFanBlendsTheMeansByHowUnequalItsRadiiAre) {
+  // The rule with fan_from 1.3 and fan_to 1.6 on q = A / G (A the
+  // arithmetic mean, G the geometric), τ = (1 − s) A + s G:
+  const TriangleRadiusRule rule{1.3, 1.6};
+  // - a fan 0.8, 0.1, 0.1: A = 1/3, G = 0.2, q = 5/3 ≥ 1.6, so s = 1 and
+  //   τ = G; 3 ∂τ/∂r = G / r = 0.25, 2, 2;
+  const TriangleRadius fan = triangle_radius(0.8, 0.1, 0.1, rule);
+  EXPECT_NEAR(fan.tau, 0.2, 1e-15);
+  EXPECT_NEAR(fan.thirds[0], 0.25, 1e-14);
+  EXPECT_NEAR(fan.thirds[1], 2.0, 1e-14);
+  EXPECT_NEAR(fan.thirds[2], 2.0, 1e-14);
+  // - close radii 1, 1.2, 1.1: q = 1.1 / ∛1.32 ≈ 1.0028 ≤ 1.3, the
+  //   arithmetic mean 1.1 and 3 ∂τ/∂r = 1;
+  const TriangleRadius close = triangle_radius(1.0, 1.2, 1.1, rule);
+  EXPECT_EQ(close.tau, (1.0 + 1.2 + 1.1) / 3);
+  for (const double third : close.thirds) EXPECT_EQ(third, 1.0);
+  // - between, 0.125, 1, 1: A = 17/24, G = 1/2, q = 17/12, t = (17/12 −
+  //   1.3) / 0.3 = 7/18, s = t² (3 − 2t) = (49/324)(40/18) = 1960/5832,
+  //   τ = A − s (A − G) = 17/24 − (1960/5832)(5/24).
+  const TriangleRadius between = triangle_radius(0.125, 1.0, 1.0, rule);
+  EXPECT_NEAR(between.tau, 17.0 / 24 - (1960.0 / 5832) * (5.0 / 24), 1e-15);
+  // Its ∂τ/∂r (the fit's Jacobian) against central differences of τ, in
+  // the blend, where s itself moves with the radii.
+  const std::array<double, 3> radii{0.125, 1.0, 1.0};
+  for (std::size_t v = 0; v < 3; ++v) {
+    const double h = 1e-6;
+    std::array<double, 3> up = radii, down = radii;
+    up[v] += h, down[v] -= h;
+    const double difference = (triangle_radius(up[0], up[1], up[2], rule).tau -
+                               triangle_radius(down[0], down[1], down[2], rule).tau) /
+                              (2 * h);
+    EXPECT_NEAR(between.thirds[v] / 3, difference, 1e-8) << "sphere " << v;
+  }
+  // The written skeleton takes τ by the option's rule.
+  for (const double r :
+       written_triangle_radii({Vec4(0, 0, 0, 0.125), Vec4(1, -0.1, 0, 1.0), Vec4(1, 0.1, 0, 1.0)}, rule))
+    EXPECT_NEAR(r, between.tau, 1e-15);
+}
+
+TEST(MedialMesh, ByDefaultOnlyTheSteepestFansTakeTheGeometricMean) {
+  // The default rule blends from q = A / G = 2 to 2.5 (A the arithmetic
+  // mean, G the geometric):
+  // - 0.64, 0.01, 0.01: A = 0.66 / 3 = 0.22, G = ∛(6.4e−5) = 0.04,
+  //   q = 5.5: the geometric mean, 0.04;
+  // - 0.8, 0.1, 0.1: A = 1/3, G = 0.2, q = 5/3 < 2: the arithmetic, 1/3.
+  const auto written_radius = [](const std::vector<Vec4>& spheres) {
+    return written_triangle_radii(spheres, ReconstructOptions{}.medial.triangle_radius)[0];
+  };
+  EXPECT_NEAR(written_radius({Vec4(0, 0, 0, 0.64), Vec4(1, -0.1, 0, 0.01), Vec4(1, 0.1, 0, 0.01)}), 0.04, 1e-15);
+  EXPECT_NEAR(written_radius({Vec4(0, 0, 0, 0.8), Vec4(1, -0.1, 0, 0.1), Vec4(1, 0.1, 0, 0.1)}), 1.0 / 3.0, 1e-15);
 }
 
 TEST(MedialMesh, SameInputSameBytesInOneProcess) {

@@ -199,10 +199,19 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                     "Where the medial fit's radius bound finds a ball inside its neighbour's, it first grows the "
                     "smaller up to its centre's distance to the input, then shrinks the larger (better on some "
                     "shapes, worse on others: docs/reconstruction_medial.md, \"What limits it\")");
-  command->add_flag("--medial-geometric-triangle-radius", options.medial.geometric_triangle_radius,
-                    "Each medial triangle takes the geometric mean of its spheres' radii, not the arithmetic: a sheet "
-                    "fanning out to a thin part no longer fills the crease where that part meets the body (better on "
-                    "some shapes, worse on others: docs/reconstruction_medial.md, \"The primitives\")");
+  CLI::Option* geometric_radius = command->add_flag_callback(
+      "--medial-geometric-triangle-radius",
+      [&options] { options.medial.triangle_radius = reconstruct::TriangleRadiusRule::geometric(); },
+      "Each medial triangle takes the geometric mean of its spheres' radii, not only the steepest fans: a "
+      "sheet fanning out to a thin part no longer fills the crease where that part meets the body (better "
+      "on some shapes, worse on others: docs/reconstruction_medial.md, \"The primitives\")");
+  command
+      ->add_flag_callback(
+          "--medial-arithmetic-triangle-radius",
+          [&options] { options.medial.triangle_radius = reconstruct::TriangleRadiusRule::arithmetic(); },
+          "Each medial triangle takes the arithmetic mean of its spheres' radii, the steepest fans too (by "
+          "default those take the geometric mean: docs/reconstruction_medial.md, \"The primitives\")")
+      ->excludes(geometric_radius);
   command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees of the curve path (default 90)");
   command->add_option("--prune-span", options.prune_span,
                       "Also prune Voronoi vertices whose contact samples span less than this × the diagonal "

@@ -174,8 +174,8 @@ constexpr std::size_t per_sphere = 4;
 /// radii, sparse: ∂δ_k/∂θ = (∂f/∂θ) / |∇f|, summed over the primitives whose
 /// support holds the point (medial_derivatives.hpp), each derivative put on
 /// the spheres the primitive was made of (field_of's order: edges,
-/// triangles, isolated spheres; a triangle's radius is the mean of its
-/// spheres', the geometric one with `geometric`: triangle_radius), at the
+/// triangles, isolated spheres; a triangle's radius is a mean of its
+/// spheres' by `rule`: triangle_radius), at the
 /// point's foot (where its last Newton step started: to first order the
 /// distance to the surface changes as f does there). Points
 /// outside every support have no row. Without `centres`, the centres'
@@ -184,7 +184,7 @@ struct Jacobian {
   std::vector<std::vector<std::pair<std::size_t, double>>> rows;  ///< per point: (unknown, ∂δ/∂θ)
 };
 
-Jacobian jacobian(const FitPoints& fit_points, const Evaluation& e, bool centres, bool geometric) {
+Jacobian jacobian(const FitPoints& fit_points, const Evaluation& e, bool centres, const TriangleRadiusRule& rule) {
   const std::vector<WeightedPoint>& points = fit_points.all;
   // Per part: its primitives' support boxes.
   std::vector<std::vector<std::optional<SupportBox>>> boxes(e.part_meshes.size());
@@ -222,12 +222,13 @@ Jacobian jacobian(const FitPoints& fit_points, const Evaluation& e, bool centres
       } else if (q < mesh.edges.size() + mesh.triangles.size()) {
         const auto& triangle = mesh.triangles[q - mesh.edges.size()];
         const PrimitiveDerivatives<3> d = derivatives(std::get<ScalisTriangle>(primitives[q]), p);
-        // Its one radius τ is the mean of its spheres' (triangle_radius):
-        // ∂τ/∂r_v = 1/3, or τ / (3 r_v) for the geometric mean.
-        const double tau = std::get<ScalisTriangle>(primitives[q]).radii()[0];
-        for (std::size_t v = 0; v < 3; ++v)
-          add(k, triangle[v], d.vertex[v],
-              geometric ? d.radius[0] / 3.0 * (tau / mesh.spheres[std::size_t(triangle[v])].w()) : d.radius[0] / 3.0);
+        // Its one radius τ is a mean of its spheres' (triangle_radius):
+        // ∂τ/∂r_v = thirds[v] / 3.
+        const std::array<double, 3> thirds =
+            triangle_radius(mesh.spheres[std::size_t(triangle[0])].w(), mesh.spheres[std::size_t(triangle[1])].w(),
+                            mesh.spheres[std::size_t(triangle[2])].w(), rule)
+                .thirds;
+        for (std::size_t v = 0; v < 3; ++v) add(k, triangle[v], d.vertex[v], d.radius[0] / 3.0 * thirds[v]);
       } else {
         const std::int32_t sphere = mesh.isolated[q - mesh.edges.size() - mesh.triangles.size()];
         const PrimitiveDerivatives<1> d =
@@ -494,7 +495,7 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
   if (values.empty()) values.push_back(value);
   for (int round = 1; round <= stage.rounds; ++round) {
     const NormalEquations equations =
-        normal_equations(points.all, now, jacobian(points, now, o.fit_centres, o.geometric_triangle_radius),
+        normal_equations(points.all, now, jacobian(points, now, o.fit_centres, o.triangle_radius),
                          stage.weights(now), Eigen::Index(per_sphere * mesh.spheres.size()));
     bool better = false;
     for (int attempt = 0; attempt < o.damping_attempts && !better; ++attempt, lambda *= 10.0) {

@@ -391,7 +391,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   }
   MedialFitOptions fit = m.fit;
   fit.min_radius = m.min_radius_facets * diagonal / o.measure_divisions;
-  fit.geometric_triangle_radius = m.geometric_triangle_radius;
+  fit.triangle_radius = m.triangle_radius;
   const TopologyError guard = too_much.empty() ? topology_error : TopologyError{};
   const auto fitted = [&](const MedialMesh& start, MedialFitReport* fit_report) {
     Stage s;

@@ -484,7 +484,7 @@ std::vector<std::string> blend_children(const Stage& stage, const ReconstructOpt
   for (const auto& t : m.triangles) {
     const Vec4 &a = sphere(t[0]), &b = sphere(t[1]), &c = sphere(t[2]);
     // One radius (medial_mesh.hpp, triangle_radius).
-    const double radius = triangle_radius(a.w(), b.w(), c.w(), o.medial.geometric_triangle_radius);
+    const double radius = triangle_radius(a.w(), b.w(), c.w(), o.medial.triangle_radius).tau;
     children.push_back(fmt::format("{{\"type\": \"scalis_triangle\", \"vertices\": [[{:.17g}, {:.17g}, {:.17g}], "
                                    "[{:.17g}, {:.17g}, {:.17g}], [{:.17g}, {:.17g}, {:.17g}]], \"radius\": [{:.17g}, {:.17g}, {:.17g}], {}}}",
                                    a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), c.x(), c.y(), c.z(), radius, radius,

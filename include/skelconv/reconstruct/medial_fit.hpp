@@ -123,10 +123,9 @@ struct MedialFitOptions {
   /// it): a tube thinner than the resolution it is meshed at comes back in
   /// pieces, or not at all (docs/reconstruction_medial.md, "The fit": the radius floor).
   double min_radius = 0.0;
-  /// Whether `field_of` gives each triangle the geometric mean of its
-  /// spheres' radii instead of the arithmetic (triangle_radius,
-  /// MedialOptions::geometric_triangle_radius): the Jacobian's ∂τ/∂r.
-  bool geometric_triangle_radius = false;
+  /// How `field_of` takes each triangle's one radius from its spheres'
+  /// (triangle_radius, MedialOptions::triangle_radius): the Jacobian's ∂τ/∂r.
+  TriangleRadiusRule triangle_radius;
   /// Along every edge of the mesh the radii differ by at most this × the
   /// centres' distance (medial_slope.hpp: no ball inside its neighbour's,
   /// as on a medial axis); each step's radii are lowered to keep it.

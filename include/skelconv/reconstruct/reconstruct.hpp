@@ -145,16 +145,13 @@ struct MedialOptions {
   /// (Hausdorff), but the anchor from 2.65% to 3.22% and the hand from 1.91%
   /// to 1.97% (docs/reconstruction_medial.md, "What limits it").
   bool grow_within_input = false;
-  /// Whether each medial triangle's SCALIS triangle takes the geometric mean
-  /// of its spheres' radii instead of the arithmetic (medial_mesh.hpp,
-  /// triangle_radius; `skeletonize --medial-geometric-triangle-radius`).
-  /// Off by default: it brings CGAL's cow (`--repair`) within the organic
-  /// goals, its tail's crease no longer filled (1.71 / 0.165 → 1.34 / 0.190,
-  /// Hausdorff / RMS % of the diagonal), homer from 1.21 to 0.89 and the
-  /// knot from 0.85 to 0.45, but takes the mannequin-devil (`--repair`)
-  /// from 1.35 / 0.185 to 1.85 / 0.307 and the femur's RMS from 0.340 to
-  /// 0.446 (docs/reconstruction_medial.md, "The primitives").
-  bool geometric_triangle_radius = false;
+  /// How each medial triangle's SCALIS triangle takes its one radius from
+  /// its spheres' (medial_mesh.hpp, triangle_radius): by default the
+  /// arithmetic mean, the geometric where the radii differ most (a fan from
+  /// a thick part into a thin one); `skeletonize
+  /// --medial-geometric-triangle-radius` takes the geometric mean
+  /// everywhere, `--medial-arithmetic-triangle-radius` the arithmetic.
+  TriangleRadiusRule triangle_radius;
   /// Where the fitted result has more tunnels than the input, the medial
   /// mesh is simplified again with every loop of three edges closed whose
   /// triangle the input holds (QuadricOptions::inside_samples: the input's
