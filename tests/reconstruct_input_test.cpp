@@ -10,6 +10,7 @@
 #include <fstream>
 #include <map>
 #include <numbers>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -157,6 +158,63 @@ TEST(BallFit, PointsMergedOnTheSurfaceStayOnIt) {
     area += p.weight;
   }
   EXPECT_NEAR(area, 6.0, 1e-11);
+}
+
+// A slab 1 × 1 × 0.1 (the unit cube flattened), its points merged in cells
+// of 0.25: every cell that holds the top face (z = 0.1) holds the bottom one
+// (z = 0) too. Merged by cell alone, each such cell gives one point, on one
+// face, with both faces' area: a fit to them sees one face of the slab in
+// each cell and weighs it twice. Grouped by facing (60°), each of the six
+// faces keeps its own points and its own area, by hand: the top and the
+// bottom 1 each, the four sides 0.1 each (sums of ~600 terms: 1e-12).
+TEST(BallFit, EachFaceOfAThinSlabKeepsItsOwnPoints) {
+  TriangleMesh slab = unit_cube();
+  for (Vec3& v : slab.vertices) v.z() *= 0.1;
+  const double h = 0.25;
+  // The area on each face, faces -x, +x, -y, +y, -z, +z: a point lies on the
+  // face whose coordinate it has at the bound (sub-triangles' centroids are
+  // never on an edge).
+  const auto face_areas = [](const std::vector<WeightedPoint>& points) {
+    std::array<double, 6> area{};
+    const Vec3 hi(1.0, 1.0, 0.1);
+    for (const WeightedPoint& p : points) {
+      int on = -1;
+      for (int axis = 0; axis < 3; ++axis) {
+        if (std::abs(p.point[axis]) < 1e-12) on = 2 * axis;
+        if (std::abs(p.point[axis] - hi[axis]) < 1e-12) on = 2 * axis + 1;
+      }
+      EXPECT_GE(on, 0) << p.point.transpose() << " is on no face";
+      if (on >= 0) area[std::size_t(on)] += p.weight;
+    }
+    return area;
+  };
+  const std::array<double, 6> expected{0.1, 0.1, 0.1, 0.1, 1.0, 1.0};
+  const std::array<double, 6> grouped = face_areas(surface_points_in_cells(slab, h, std::numbers::pi / 3));
+  for (std::size_t f = 0; f < 6; ++f) EXPECT_NEAR(grouped[f], expected[f], 1e-12) << "face " << f;
+  // By cell alone: the top and the bottom do not keep their areas (the
+  // total, 2.4, is kept).
+  const std::vector<WeightedPoint> one_per_cell = merged_in_cells(area_weighted_points(slab, h), h, true);
+  const std::array<double, 6> by_cell = face_areas(one_per_cell);
+  EXPECT_GT(std::abs(by_cell[5] - 1.0), 0.1);
+  EXPECT_NEAR(std::accumulate(by_cell.begin(), by_cell.end(), 0.0), 2.4, 1e-12);
+  // At π every face of a cell is one group: the points merged by cell.
+  const std::vector<WeightedPoint> at_pi = surface_points_in_cells(slab, h, std::numbers::pi);
+  ASSERT_EQ(at_pi.size(), one_per_cell.size());
+  for (std::size_t k = 0; k < at_pi.size(); ++k) {
+    EXPECT_EQ(at_pi[k].point, one_per_cell[k].point);
+    EXPECT_EQ(at_pi[k].weight, one_per_cell[k].weight);
+  }
+  // A flat surface has one facing: grouped or not, the same points.
+  TriangleMesh square;
+  square.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  square.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const std::vector<WeightedPoint> flat = surface_points_in_cells(square, h, std::numbers::pi / 3);
+  const std::vector<WeightedPoint> cells = merged_in_cells(area_weighted_points(square, h), h, true);
+  ASSERT_EQ(flat.size(), cells.size());
+  for (std::size_t k = 0; k < flat.size(); ++k) {
+    EXPECT_EQ(flat[k].point, cells[k].point);
+    EXPECT_EQ(flat[k].weight, cells[k].weight);
+  }
 }
 
 // Points exactly on a sphere (a Fibonacci spiral, centre (0.3, −0.2, 0.1),

@@ -122,6 +122,15 @@ struct MedialOptions {
   double thin_wall_max_refinement = 2.5;
   /// The fit's points are about this × the diagonal apart.
   double fit_spacing = 1.0 / 64.0;
+  /// Within a cell of the fit's spacing, points whose triangles' normals
+  /// differ by more than this (degrees) are kept apart, one point per face
+  /// (surface_points_in_cells): the two faces of a wall thinner than a
+  /// cell, or of a sharp edge, each get their own point. 60: a right-angled
+  /// edge's faces (90°) and a wall's two (180°) are split, while a smooth
+  /// surface bends by less within a cell (diagonal / 64) but at its
+  /// sharpest creases and tips. 180: one point per cell, whatever its
+  /// faces.
+  double fit_facing_angle_degrees = 60.0;
   /// No sphere's radius ends below this × the facet size of the
   /// measuring mesh (diagonal / ReconstructOptions::measure_divisions;
   /// MedialFitOptions::min_radius). A thinner tube (a dinosaur's claw, a
