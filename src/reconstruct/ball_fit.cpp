@@ -142,7 +142,8 @@ std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& poi
   return merged_by_key(points, keys, on_surface);
 }
 
-std::vector<WeightedPoint> surface_points_in_cells(const TriangleMesh& mesh, double h, double facing_angle) {
+std::vector<WeightedPoint> surface_points_in_cells(const TriangleMesh& mesh, double h, double facing_angle,
+                                                   double least_area) {
   // At π or more every point joins the cell's first group (a rounded cosine
   // of two opposite normals may fall just below −1).
   const double least_cosine =
@@ -166,6 +167,28 @@ std::vector<WeightedPoint> surface_points_in_cells(const TriangleMesh& mesh, dou
       key[3] = std::int64_t(group);
       keys.push_back(key);
     }
+  }
+  // A group of less than least_area × h² (a face that only clips the cell,
+  // or the side of a part thinner than the cell) joins its cell's largest
+  // group; where every group is that small, the cell gives one point.
+  if (least_area > 0.0) {
+    std::map<CellKey, double> area;
+    for (std::size_t k = 0; k < points.size(); ++k) area[keys[k]] += points[k].weight;
+    // Per cell (its key with group 0), the key of its largest group: the
+    // first of the largest, in the order of the keys.
+    std::map<CellKey, CellKey> largest;
+    for (const auto& [key, a] : area) {
+      CellKey cell = key;
+      cell[3] = 0;
+      const auto [it, added] = largest.emplace(cell, key);
+      if (!added && area.at(it->second) < a) it->second = key;
+    }
+    for (std::size_t k = 0; k < points.size(); ++k)
+      if (area.at(keys[k]) < least_area * h * h) {
+        CellKey cell = keys[k];
+        cell[3] = 0;
+        keys[k] = largest.at(cell);
+      }
   }
   return merged_by_key(points, keys, true);
 }

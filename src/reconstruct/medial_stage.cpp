@@ -297,11 +297,12 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // parts' points would merge them into one on either.
   const bool on_surface = true;
   // Within a cell, the faces that face apart (a thin wall's two sides, a
-  // sharp edge's two faces) keep a point each
-  // (MedialOptions::fit_facing_angle_degrees; 180: one point per cell).
+  // sharp edge's two faces) keep a point each where each holds enough of
+  // the cell (MedialOptions::fit_facing_angle_degrees, fit_facing_least_area;
+  // 180: one point per cell).
   const auto fit_points_of = [&](const TriangleMesh& part) {
     return surface_points_in_cells(part, m.fit_spacing * diagonal,
-                                   m.fit_facing_angle_degrees * std::numbers::pi / 180.0);
+                                   m.fit_facing_angle_degrees * std::numbers::pi / 180.0, m.fit_facing_least_area);
   };
   std::vector<WeightedPoint> points;
   std::vector<std::int32_t> point_parts;

@@ -50,10 +50,17 @@ std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& poi
 /// faces of a wall thinner than h (CGAL's blade: 0.65 thick, h = 2.0) give
 /// one point in each cell, on either face at random with both faces'
 /// weight, and the two faces of a sharp edge one point on one of them: a
-/// fit to them leaves the other face where it likes. With `facing_angle`
-/// π, one point per cell: merged_in_cells(area_weighted_points(mesh, h),
-/// h, true), the same points.
-std::vector<WeightedPoint> surface_points_in_cells(const TriangleMesh& mesh, double h, double facing_angle);
+/// fit to them leaves the other face where it likes. A group of less than
+/// `least_area` × h² joins its cell's largest group: the sides of a part
+/// thinner than a cell (a claw) face every way within the cell, and kept
+/// apart they hold the fit's spheres to both sides of the part, which
+/// thins it until the sum of fields lets it come apart (CGAL's dino); the
+/// two faces of a sharp edge or a thin wall that cross a cell each hold
+/// about h² of it. With `facing_angle` π, or with every group below
+/// `least_area`, one point per cell: merged_in_cells(area_weighted_points(
+/// mesh, h), h, true), the same points.
+std::vector<WeightedPoint> surface_points_in_cells(const TriangleMesh& mesh, double h, double facing_angle,
+                                                   double least_area = 0.0);
 
 /// One least-squares sphere per connected component of `mesh` (triangles
 /// sharing a vertex), in the order of each component's first triangle,

@@ -131,6 +131,19 @@ struct MedialOptions {
   /// sharpest creases and tips. 180: one point per cell, whatever its
   /// faces.
   double fit_facing_angle_degrees = 60.0;
+  /// A facing that holds less than this × the cell's face area (the fit's
+  /// spacing squared) within a cell joins the cell's largest facing
+  /// (surface_points_in_cells' least_area). A flat face that crosses a
+  /// cell holds up to √2 of it (h² where it crosses square), a face that
+  /// only clips a corner less, and each facing of a part thinner than a
+  /// cell (a claw, whose sides face every way within it) less still: kept
+  /// apart, those hold the fit's spheres to both sides of the part and
+  /// thin it until it comes apart at the measure. CGAL's dino keeps one
+  /// component from 0.15 to 0.35 (at 0 and 0.1: 4 and 2); 0.2, within
+  /// that, is the best measured on the 3torus, whose distances swing
+  /// between 1.9% and 3.7% over that range (docs/reconstruction_medial.md,
+  /// "What limits it"). 0: every facing keeps its point.
+  double fit_facing_least_area = 0.2;
   /// No sphere's radius ends below this × the facet size of the
   /// measuring mesh (diagonal / ReconstructOptions::measure_divisions;
   /// MedialFitOptions::min_radius). A thinner tube (a dinosaur's claw, a
