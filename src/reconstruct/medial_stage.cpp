@@ -298,11 +298,12 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   const bool on_surface = true;
   // Within a cell, the faces that face apart (a thin wall's two sides, a
   // sharp edge's two faces) keep a point each where each holds enough of
-  // the cell (MedialOptions::fit_facing_angle_degrees, fit_facing_least_area;
-  // 180: one point per cell).
+  // the cell (MedialOptions::fit_by_facing, fit_facing_angle_degrees,
+  // fit_facing_least_area); without fit_by_facing, one point per cell.
+  const double facing_angle =
+      m.fit_by_facing ? m.fit_facing_angle_degrees * std::numbers::pi / 180.0 : std::numbers::pi;
   const auto fit_points_of = [&](const TriangleMesh& part) {
-    return surface_points_in_cells(part, m.fit_spacing * diagonal,
-                                   m.fit_facing_angle_degrees * std::numbers::pi / 180.0, m.fit_facing_least_area);
+    return surface_points_in_cells(part, m.fit_spacing * diagonal, facing_angle, m.fit_facing_least_area);
   };
   std::vector<WeightedPoint> points;
   std::vector<std::int32_t> point_parts;
