@@ -10,6 +10,7 @@
 #include <fstream>
 #include <map>
 #include <numbers>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -157,6 +158,158 @@ TEST(BallFit, PointsMergedOnTheSurfaceStayOnIt) {
     area += p.weight;
   }
   EXPECT_NEAR(area, 6.0, 1e-11);
+}
+
+// A slab 1 × 1 × 0.1 (the unit cube flattened), its points merged in cells
+// of 0.25: every cell that holds the top face (z = 0.1) holds the bottom one
+// (z = 0) too. Merged by cell alone, each such cell gives one point, on one
+// face, with both faces' area: a fit to them sees one face of the slab in
+// each cell and weighs it twice. Grouped by facing (60°), each of the six
+// faces keeps its own points and its own area, by hand: the top and the
+// bottom 1 each, the four sides 0.1 each (sums of ~600 terms: 1e-12).
+TEST(BallFit, EachFaceOfAThinSlabKeepsItsOwnPoints) {
+  TriangleMesh slab = unit_cube();
+  for (Vec3& v : slab.vertices) v.z() *= 0.1;
+  const double h = 0.25;
+  // The area on each face, faces -x, +x, -y, +y, -z, +z: a point lies on the
+  // face whose coordinate it has at the bound (sub-triangles' centroids are
+  // never on an edge).
+  const auto face_areas = [](const std::vector<WeightedPoint>& points) {
+    std::array<double, 6> area{};
+    const Vec3 hi(1.0, 1.0, 0.1);
+    for (const WeightedPoint& p : points) {
+      int on = -1;
+      for (int axis = 0; axis < 3; ++axis) {
+        if (std::abs(p.point[axis]) < 1e-12) on = 2 * axis;
+        if (std::abs(p.point[axis] - hi[axis]) < 1e-12) on = 2 * axis + 1;
+      }
+      EXPECT_GE(on, 0) << p.point.transpose() << " is on no face";
+      if (on >= 0) area[std::size_t(on)] += p.weight;
+    }
+    return area;
+  };
+  const std::array<double, 6> expected{0.1, 0.1, 0.1, 0.1, 1.0, 1.0};
+  const std::array<double, 6> grouped = face_areas(surface_points_in_cells(slab, h, std::numbers::pi / 3));
+  for (std::size_t f = 0; f < 6; ++f) EXPECT_NEAR(grouped[f], expected[f], 1e-12) << "face " << f;
+  // By cell alone: the top and the bottom do not keep their areas (the
+  // total, 2.4, is kept).
+  const std::vector<WeightedPoint> one_per_cell = merged_in_cells(area_weighted_points(slab, h), h, true);
+  const std::array<double, 6> by_cell = face_areas(one_per_cell);
+  EXPECT_GT(std::abs(by_cell[5] - 1.0), 0.1);
+  EXPECT_NEAR(std::accumulate(by_cell.begin(), by_cell.end(), 0.0), 2.4, 1e-12);
+  // At π every face of a cell is one group: the points merged by cell.
+  const std::vector<WeightedPoint> at_pi = surface_points_in_cells(slab, h, std::numbers::pi);
+  ASSERT_EQ(at_pi.size(), one_per_cell.size());
+  for (std::size_t k = 0; k < at_pi.size(); ++k) {
+    EXPECT_EQ(at_pi[k].point, one_per_cell[k].point);
+    EXPECT_EQ(at_pi[k].weight, one_per_cell[k].weight);
+  }
+  // A flat surface has one facing: grouped or not, the same points.
+  TriangleMesh square;
+  square.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  square.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const std::vector<WeightedPoint> flat = surface_points_in_cells(square, h, std::numbers::pi / 3);
+  const std::vector<WeightedPoint> cells = merged_in_cells(area_weighted_points(square, h), h, true);
+  ASSERT_EQ(flat.size(), cells.size());
+  for (std::size_t k = 0; k < flat.size(); ++k) {
+    EXPECT_EQ(flat[k].point, cells[k].point);
+    EXPECT_EQ(flat[k].weight, cells[k].weight);
+  }
+}
+
+/// The box [lo, hi], outward, each face a grid of squares (steps[a] along
+/// axis a) split in two triangles: no triangle crosses a grid line, so
+/// where the cells' bounds are grid lines each cell holds exactly the
+/// area of the faces within it (a triangle's points are its sub-triangles'
+/// centroids, inside it).
+TriangleMesh gridded_box(const Vec3& lo, const Vec3& hi, const std::array<int, 3>& steps) {
+  TriangleMesh m;
+  for (int a = 0; a < 3; ++a) {
+    const int u = (a + 1) % 3, v = (a + 2) % 3;  // e_u × e_v = e_a
+    for (const bool high : {false, true})
+      for (int i = 0; i < steps[std::size_t(u)]; ++i)
+        for (int j = 0; j < steps[std::size_t(v)]; ++j) {
+          const auto corner = [&](int di, int dj) {
+            Vec3 p;
+            p[a] = high ? hi[a] : lo[a];
+            p[u] = lo[u] + (hi[u] - lo[u]) * (i + di) / steps[std::size_t(u)];
+            p[v] = lo[v] + (hi[v] - lo[v]) * (j + dj) / steps[std::size_t(v)];
+            return p;
+          };
+          const auto first = std::int32_t(m.vertices.size());
+          m.vertices.insert(m.vertices.end(), {corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)});
+          if (high)
+            m.triangles.push_back({first, first + 1, first + 2}), m.triangles.push_back({first, first + 2, first + 3});
+          else
+            m.triangles.push_back({first, first + 2, first + 1}), m.triangles.push_back({first, first + 3, first + 2});
+        }
+  }
+  return m;
+}
+
+/// The area of `points` on each face of the box [lo, hi], faces −x, +x,
+/// −y, +y, −z, +z: a point lies on the face whose bound it has (the
+/// points are centroids, never on an edge).
+std::array<double, 6> box_face_areas(const std::vector<WeightedPoint>& points, const Vec3& lo, const Vec3& hi) {
+  std::array<double, 6> area{};
+  for (const WeightedPoint& p : points) {
+    int on = -1;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (std::abs(p.point[axis] - lo[axis]) < 1e-12) on = 2 * axis;
+      if (std::abs(p.point[axis] - hi[axis]) < 1e-12) on = 2 * axis + 1;
+    }
+    EXPECT_GE(on, 0) << p.point.transpose() << " is on no face";
+    if (on >= 0) area[std::size_t(on)] += p.weight;
+  }
+  return area;
+}
+
+// A slab [0.125, 1.125]² × [0.05, 0.2] in cells of 0.25, gridded at 1/16
+// so that each cell holds exactly the faces' area within it: its edges run
+// through the middle of the cells, where each face holds at least 0.125 ×
+// 0.125 = 0.25 h² (the top and the bottom in a corner cell) or 0.125 × 0.15
+// = 0.3 h² (a side in an end cell). Above the medial path's least area
+// (0.2 h²) every facing keeps its own point and its own area, by hand the
+// top and the bottom 1 each, the sides 0.15 each; merged by cell alone the
+// top and the bottom share their cells' points and do not.
+TEST(BallFit, TheFacesOfASharpEdgeAboveTheLeastAreaKeepTheirOwnPoints) {
+  const Vec3 lo(0.125, 0.125, 0.05), hi(1.125, 1.125, 0.2);
+  const TriangleMesh slab = gridded_box(lo, hi, {16, 16, 3});
+  const double h = 0.25;
+  const std::array<double, 6> expected{0.15, 0.15, 0.15, 0.15, 1.0, 1.0};
+  const std::array<double, 6> kept = box_face_areas(surface_points_in_cells(slab, h, std::numbers::pi / 3, 0.2), lo, hi);
+  for (std::size_t f = 0; f < 6; ++f) EXPECT_NEAR(kept[f], expected[f], 1e-12) << "face " << f;
+  const std::array<double, 6> by_cell = box_face_areas(merged_in_cells(area_weighted_points(slab, h), h, true), lo, hi);
+  EXPECT_GT(std::abs(by_cell[5] - 1.0), 0.1);
+}
+
+// A square rod [0.125, 0.875] × [0.1, 0.14]², gridded at 1/16 along x, in
+// cells of 0.25 (its cross-section inside one row of cells): each cell
+// holds its four sides, facing four ways (90° and 180° apart), 0.04 × 0.25
+// = 0.16 h² each in the middle cells and half that in the end ones. Kept
+// apart, they give four points a cell around a part thinner than the cell,
+// which hold a fit's spheres to both of its sides and thin it until it
+// comes apart (CGAL's dino's claws): 4 × 4 sides and the 2 caps, 18
+// points. Below the medial path's least area (0.2 h²) they are one group:
+// one point per cell, 4 in all, each with its cell's area, by hand 4 ×
+// 0.04 × 0.25 = 0.04 in the middle cells and 4 × 0.04 × 0.125 + 0.04² (a
+// cap) = 0.0216 in the end ones, the points merged by cell alone.
+TEST(BallFit, APartThinnerThanACellGivesOnePointPerCell) {
+  const TriangleMesh rod = gridded_box(Vec3(0.125, 0.1, 0.1), Vec3(0.875, 0.14, 0.14), {12, 1, 1});
+  const double h = 0.25;
+  EXPECT_EQ(surface_points_in_cells(rod, h, std::numbers::pi / 3).size(), 18u);
+  const std::vector<WeightedPoint> points = surface_points_in_cells(rod, h, std::numbers::pi / 3, 0.2);
+  ASSERT_EQ(points.size(), 4u);
+  std::array<double, 4> area{};
+  for (const WeightedPoint& p : points) area[std::size_t(std::floor(p.point.x() / h))] += p.weight;
+  const std::array<double, 4> expected{0.0216, 0.04, 0.04, 0.0216};
+  for (std::size_t c = 0; c < 4; ++c) EXPECT_NEAR(area[c], expected[c], 1e-12) << "cell " << c;
+  const std::vector<WeightedPoint> one_per_cell = merged_in_cells(area_weighted_points(rod, h), h, true);
+  ASSERT_EQ(points.size(), one_per_cell.size());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    EXPECT_EQ(points[k].point, one_per_cell[k].point);
+    EXPECT_EQ(points[k].weight, one_per_cell[k].weight);
+  }
 }
 
 // Points exactly on a sphere (a Fibonacci spiral, centre (0.3, −0.2, 0.1),

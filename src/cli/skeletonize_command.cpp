@@ -212,6 +212,10 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
           "Each medial triangle takes the arithmetic mean of its spheres' radii, the steepest fans too (by "
           "default those take the geometric mean: docs/reconstruction_medial.md, \"The primitives\")")
       ->excludes(geometric_radius);
+  command->add_flag("--medial-fit-facings", options.medial.fit_by_facing,
+                    "The medial fit keeps one point per facing within each cell of its grid, not one per cell: a "
+                    "sharp edge's two faces and a thin wall's two faces are each seen (better on most CAD parts, "
+                    "worse on others: docs/reconstruction_medial.md, \"What limits it\")");
   command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees of the curve path (default 90)");
   command->add_option("--prune-span", options.prune_span,
                       "Also prune Voronoi vertices whose contact samples span less than this × the diagonal "

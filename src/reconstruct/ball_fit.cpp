@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <numbers>
 
 #include <Eigen/Dense>
 
@@ -89,15 +90,27 @@ std::vector<WeightedPoint> area_weighted_points(const TriangleMesh& mesh, double
   return out;
 }
 
-std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& points, double h, bool on_surface) {
-  const auto cell_of = [h](const Vec3& p) {
-    return std::array<std::int64_t, 3>{std::int64_t(std::floor(p.x() / h)), std::int64_t(std::floor(p.y() / h)),
-                                       std::int64_t(std::floor(p.z() / h))};
-  };
-  std::map<std::array<std::int64_t, 3>, std::size_t> cell_index;
+namespace {
+
+/// A cell of the merging grid and a group within it.
+using CellKey = std::array<std::int64_t, 4>;
+
+/// The cell of spacing h that holds p, group 0.
+CellKey cell_of(const Vec3& p, double h) {
+  return {std::int64_t(std::floor(p.x() / h)), std::int64_t(std::floor(p.y() / h)),
+          std::int64_t(std::floor(p.z() / h)), 0};
+}
+
+/// `points` merged per key (`keys[k]` the key of `points[k]`), as
+/// merged_in_cells describes: one point per key, in the order of each key's
+/// first point.
+std::vector<WeightedPoint> merged_by_key(const std::vector<WeightedPoint>& points, const std::vector<CellKey>& keys,
+                                         bool on_surface) {
+  std::map<CellKey, std::size_t> cell_index;
   std::vector<WeightedPoint> sums;  // weighted sums of the points, then centroids
-  for (const WeightedPoint& p : points) {
-    const auto [it, added] = cell_index.emplace(cell_of(p.point), sums.size());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const WeightedPoint& p = points[k];
+    const auto [it, added] = cell_index.emplace(keys[k], sums.size());
     if (added) sums.push_back({Vec3::Zero(), 0.0});
     sums[it->second].point += p.weight * p.point;
     sums[it->second].weight += p.weight;
@@ -107,10 +120,10 @@ std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& poi
   if (on_surface) {
     std::vector<double> nearest(sums.size(), std::numeric_limits<double>::infinity());
     std::vector<Vec3> chosen(sums.size());
-    for (const WeightedPoint& p : points) {
-      const std::size_t i = cell_index.at(cell_of(p.point));
-      const double d = (p.point - sums[i].point).squaredNorm();
-      if (d < nearest[i]) nearest[i] = d, chosen[i] = p.point;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const std::size_t i = cell_index.at(keys[k]);
+      const double d = (points[k].point - sums[i].point).squaredNorm();
+      if (d < nearest[i]) nearest[i] = d, chosen[i] = points[k].point;
     }
     for (std::size_t i = 0; i < sums.size(); ++i) sums[i].point = chosen[i];
   }
@@ -118,6 +131,66 @@ std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& poi
   for (const WeightedPoint& s : sums)
     if (s.weight > 0.0) merged.push_back(s);
   return merged;
+}
+
+}  // namespace
+
+std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& points, double h, bool on_surface) {
+  std::vector<CellKey> keys;
+  keys.reserve(points.size());
+  for (const WeightedPoint& p : points) keys.push_back(cell_of(p.point, h));
+  return merged_by_key(points, keys, on_surface);
+}
+
+std::vector<WeightedPoint> surface_points_in_cells(const TriangleMesh& mesh, double h, double facing_angle,
+                                                   double least_area) {
+  // At π or more every point joins the cell's first group (a rounded cosine
+  // of two opposite normals may fall just below −1).
+  const double least_cosine =
+      facing_angle >= std::numbers::pi ? -std::numeric_limits<double>::infinity() : std::cos(facing_angle);
+  std::vector<WeightedPoint> points;
+  std::vector<CellKey> keys;
+  // Per cell, the unit normal of each group's first triangle.
+  std::map<CellKey, std::vector<Vec3>> groups;
+  for (const auto& t : mesh.triangles) {
+    const std::size_t first = points.size();
+    append_points(mesh, t, h, points);
+    if (points.size() == first) continue;  // a triangle of no area
+    const Vec3& a = mesh.vertices[std::size_t(t[0])];
+    const Vec3 normal = (mesh.vertices[std::size_t(t[1])] - a).cross(mesh.vertices[std::size_t(t[2])] - a).normalized();
+    for (std::size_t k = first; k < points.size(); ++k) {
+      CellKey key = cell_of(points[k].point, h);
+      std::vector<Vec3>& normals = groups[key];
+      std::size_t group = 0;
+      while (group < normals.size() && normals[group].dot(normal) < least_cosine) ++group;
+      if (group == normals.size()) normals.push_back(normal);
+      key[3] = std::int64_t(group);
+      keys.push_back(key);
+    }
+  }
+  // A group of less than least_area × h² (a face that only clips the cell,
+  // or the side of a part thinner than the cell) joins its cell's largest
+  // group; where every group is that small, the cell gives one point.
+  if (least_area > 0.0) {
+    std::map<CellKey, double> area;
+    for (std::size_t k = 0; k < points.size(); ++k) area[keys[k]] += points[k].weight;
+    // Per cell (its key with group 0), the key of its largest group: the
+    // first of the largest, in the order of the keys.
+    std::map<CellKey, CellKey> largest;
+    for (const auto& [key, a] : area) {
+      CellKey cell = key;
+      cell[3] = 0;
+      const auto [it, added] = largest.emplace(cell, key);
+      if (!added && area.at(it->second) < a) it->second = key;
+    }
+    for (std::size_t k = 0; k < points.size(); ++k)
+      if (area.at(keys[k]) < least_area * h * h) {
+        CellKey cell = keys[k];
+        cell[3] = 0;
+        keys[k] = largest.at(cell);
+      }
+  }
+  return merged_by_key(points, keys, true);
 }
 
 std::vector<Vec4> fit_component_spheres(const TriangleMesh& mesh, double h, double max_radius, std::size_t* flat) {

@@ -296,15 +296,22 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // With several parts, each part's points apart: a cell holding two
   // parts' points would merge them into one on either.
   const bool on_surface = true;
+  // Within a cell, the faces that face apart (a thin wall's two sides, a
+  // sharp edge's two faces) keep a point each where each holds enough of
+  // the cell (MedialOptions::fit_by_facing, fit_facing_angle_degrees,
+  // fit_facing_least_area); without fit_by_facing, one point per cell.
+  const double facing_angle =
+      m.fit_by_facing ? m.fit_facing_angle_degrees * std::numbers::pi / 180.0 : std::numbers::pi;
+  const auto fit_points_of = [&](const TriangleMesh& part) {
+    return surface_points_in_cells(part, m.fit_spacing * diagonal, facing_angle, m.fit_facing_least_area);
+  };
   std::vector<WeightedPoint> points;
   std::vector<std::int32_t> point_parts;
   if (part_total == 1) {
-    points = merged_in_cells(area_weighted_points(surface, m.fit_spacing * diagonal), m.fit_spacing * diagonal,
-                             on_surface);
+    points = fit_points_of(surface);
   } else {
     for (std::size_t p = 0; p < part_total; ++p) {
-      const std::vector<WeightedPoint> part = merged_in_cells(
-          area_weighted_points(part_surfaces[p], m.fit_spacing * diagonal), m.fit_spacing * diagonal, on_surface);
+      const std::vector<WeightedPoint> part = fit_points_of(part_surfaces[p]);
       points.insert(points.end(), part.begin(), part.end());
       point_parts.insert(point_parts.end(), part.size(), std::int32_t(p));
     }

@@ -41,6 +41,27 @@ std::vector<WeightedPoint> area_weighted_points(const TriangleMesh& mesh, double
 std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& points, double h,
                                            bool on_surface = false);
 
+/// The area-weighted points of `mesh` at spacing h (area_weighted_points)
+/// merged per cell as merged_in_cells with `on_surface`, but only the points
+/// of triangles that face alike: within a cell, a point joins the first
+/// group whose first triangle's normal is within `facing_angle` (radians)
+/// of its own triangle's, else starts a group of its own, and each group
+/// gives one point with the group's area. Merged by cell alone, the two
+/// faces of a wall thinner than h (CGAL's blade: 0.65 thick, h = 2.0) give
+/// one point in each cell, on either face at random with both faces'
+/// weight, and the two faces of a sharp edge one point on one of them: a
+/// fit to them leaves the other face where it likes. A group of less than
+/// `least_area` × h² joins its cell's largest group: the sides of a part
+/// thinner than a cell (a claw) face every way within the cell, and kept
+/// apart they hold the fit's spheres to both sides of the part, which
+/// thins it until the sum of fields lets it come apart (CGAL's dino); the
+/// two faces of a sharp edge or a thin wall that cross a cell each hold
+/// about h² of it. With `facing_angle` π, or with every group below
+/// `least_area`, one point per cell: merged_in_cells(area_weighted_points(
+/// mesh, h), h, true), the same points.
+std::vector<WeightedPoint> surface_points_in_cells(const TriangleMesh& mesh, double h, double facing_angle,
+                                                   double least_area = 0.0);
+
 /// One least-squares sphere per connected component of `mesh` (triangles
 /// sharing a vertex), in the order of each component's first triangle,
 /// each from its area-weighted points at spacing h, starting from their

@@ -122,6 +122,36 @@ struct MedialOptions {
   double thin_wall_max_refinement = 2.5;
   /// The fit's points are about this × the diagonal apart.
   double fit_spacing = 1.0 / 64.0;
+  /// The fit keeps one point per facing within each cell (the two
+  /// angles below) rather than one per cell (`--medial-fit-facings`). Off
+  /// by default: it takes the coupling to 2.47 / 0.411, the 3torus to
+  /// 1.92 / 0.356 and the blade within the RMS goal, but the femur from
+  /// 3.57% to 3.69% and the joint from 3.60% to 3.81%, past their
+  /// shortfalls (docs/reconstruction_medial.md, "What limits it").
+  bool fit_by_facing = false;
+  /// With fit_by_facing: within a cell of the fit's spacing, points whose
+  /// triangles' normals differ by more than this (degrees) are kept apart,
+  /// one point per face
+  /// (surface_points_in_cells): the two faces of a wall thinner than a
+  /// cell, or of a sharp edge, each get their own point. 60: a right-angled
+  /// edge's faces (90°) and a wall's two (180°) are split, while a smooth
+  /// surface bends by less within a cell (diagonal / 64) but at its
+  /// sharpest creases and tips. 180: one point per cell, whatever its
+  /// faces.
+  double fit_facing_angle_degrees = 60.0;
+  /// A facing that holds less than this × the cell's face area (the fit's
+  /// spacing squared) within a cell joins the cell's largest facing
+  /// (surface_points_in_cells' least_area). A flat face that crosses a
+  /// cell holds up to √2 of it (h² where it crosses square), a face that
+  /// only clips a corner less, and each facing of a part thinner than a
+  /// cell (a claw, whose sides face every way within it) less still: kept
+  /// apart, those hold the fit's spheres to both sides of the part and
+  /// thin it until it comes apart at the measure. CGAL's dino keeps one
+  /// component from 0.15 to 0.35 (at 0 and 0.1: 4 and 2); 0.2, within
+  /// that, is the best measured on the 3torus, whose distances swing
+  /// between 1.9% and 3.7% over that range (docs/reconstruction_medial.md,
+  /// "What limits it"). 0: every facing keeps its point.
+  double fit_facing_least_area = 0.2;
   /// No sphere's radius ends below this × the facet size of the
   /// measuring mesh (diagonal / ReconstructOptions::measure_divisions;
   /// MedialFitOptions::min_radius). A thinner tube (a dinosaur's claw, a
