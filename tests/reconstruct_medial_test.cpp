@@ -1102,19 +1102,31 @@ MedialMesh octahedron_shell() {
   return shell;
 }
 
+// The surface of `medial` meshed as the guard meshes it (facet `h`), the
+// grid's box the input's: a ball of radius 1.5's bounding box.
+TriangleMesh meshed_in_box(const MedialMesh& medial, double h) {
+  TriangleMesh input;
+  input.vertices = {Vec3(-1.5, -1.5, -1.5), Vec3(1.5, 1.5, 1.5), Vec3(1.5, -1.5, 1.5)};
+  input.triangles = {{0, 1, 2}};
+  Stage stage;
+  stage.name = "medial";
+  stage.medial = medial;
+  return mesh_stage_unprojected(input, stage, ReconstructOptions{}, h);
+}
+
+/// `medial` with an isolated sphere `ball` added.
+MedialMesh with_sphere(MedialMesh medial, const Vec4& ball) {
+  medial.isolated.push_back(std::int32_t(medial.spheres.size()));
+  medial.spheres.push_back(ball);
+  return medial;
+}
+
 TEST(FillCavities, AHollowTheSumOpensInsideASolidIsFilled) {
   const MedialMesh shell = octahedron_shell();
   ASSERT_EQ(shell.edges.size(), 12u);
   ReconstructOptions o;
-  // The grid's box: the input's, a ball of radius 1.5 (its bounding box).
-  TriangleMesh input;
-  input.vertices = {Vec3(-1.5, -1.5, -1.5), Vec3(1.5, 1.5, 1.5), Vec3(1.5, -1.5, 1.5)};
-  input.triangles = {{0, 1, 2}};
   const double h = 0.04;
-  Stage stage;
-  stage.name = "medial";
-  stage.medial = shell;
-  const TriangleMesh hollow = mesh_stage_unprojected(input, stage, o, h);
+  const TriangleMesh hollow = meshed_in_box(shell, h);
   const MeshTopology before = mesh_topology(hollow);
   ASSERT_EQ(before.components, 2u);
   ASSERT_EQ(before.euler_characteristic, 4);
@@ -1128,9 +1140,7 @@ TEST(FillCavities, AHollowTheSumOpensInsideASolidIsFilled) {
   EXPECT_LT(balls[0].ball.w(), 0.6);  // the hollow's ball, not the outer wall's (±1.38)
   EXPECT_LE(o.medial.kernel_sigma * balls[0].ball.w(), solid(balls[0].ball.head<3>()) * (1.0 + 1e-12));
 
-  stage.medial.isolated.push_back(std::int32_t(stage.medial.spheres.size()));
-  stage.medial.spheres.push_back(balls[0].ball);
-  const MeshTopology after = mesh_topology(mesh_stage_unprojected(input, stage, o, h));
+  const MeshTopology after = mesh_topology(meshed_in_box(with_sphere(shell, balls[0].ball), h));
   EXPECT_EQ(after.components, 1u);
   EXPECT_EQ(after.euler_characteristic, 2);
 
@@ -1151,14 +1161,8 @@ TEST(FillCavities, AHollowTheSumOpensInsideASolidIsFilled) {
 // own cavity, and nothing is filled.
 TEST(FillCavities, ABubbleOfAirTheSumClosesOverIsFilledWhereTheInputEnclosesNone) {
   ReconstructOptions o;
-  TriangleMesh input;
-  input.vertices = {Vec3(-1.5, -1.5, -1.5), Vec3(1.5, 1.5, 1.5), Vec3(1.5, -1.5, 1.5)};
-  input.triangles = {{0, 1, 2}};
   const double h = 0.04;
-  Stage stage;
-  stage.name = "medial";
-  stage.medial = octahedron_shell();
-  const TriangleMesh bubble = mesh_stage_unprojected(input, stage, o, h);
+  const TriangleMesh bubble = meshed_in_box(octahedron_shell(), h);
   ASSERT_EQ(mesh_topology(bubble).components, 2u);
   ASSERT_EQ(mesh_topology(bubble).euler_characteristic, 4);
   EXPECT_TRUE(skelconv::detail::encloses_empty_space(bubble));
@@ -1172,9 +1176,7 @@ TEST(FillCavities, ABubbleOfAirTheSumClosesOverIsFilledWhereTheInputEnclosesNone
   EXPECT_GT(found[0].ball.w(), 0.3);
   EXPECT_LT(found[0].ball.w(), 1.4);
 
-  stage.medial.isolated.push_back(std::int32_t(stage.medial.spheres.size()));
-  stage.medial.spheres.push_back(found[0].ball);
-  const MeshTopology after = mesh_topology(mesh_stage_unprojected(input, stage, o, h));
+  const MeshTopology after = mesh_topology(meshed_in_box(with_sphere(octahedron_shell(), found[0].ball), h));
   EXPECT_EQ(after.components, 1u);
   EXPECT_EQ(after.euler_characteristic, 2);
 
@@ -1184,19 +1186,10 @@ TEST(FillCavities, ABubbleOfAirTheSumClosesOverIsFilledWhereTheInputEnclosesNone
 // A solid ball's surface encloses no empty space; the octahedron's shell
 // meshed (an outer wall and an inner one facing into the hollow) does.
 TEST(FillCavities, AHollowSurfaceEnclosesEmptySpaceASolidOneNot) {
-  ReconstructOptions o;
-  TriangleMesh input;
-  input.vertices = {Vec3(-1.5, -1.5, -1.5), Vec3(1.5, 1.5, 1.5), Vec3(1.5, -1.5, 1.5)};
-  input.triangles = {{0, 1, 2}};
-  Stage stage;
-  stage.name = "medial";
-  stage.medial.spheres = {Vec4(0.0, 0.0, 0.0, 1.0)};
-  stage.medial.isolated = {0};
-  const TriangleMesh ball = mesh_stage_unprojected(input, stage, o, 0.1);
+  const TriangleMesh ball = meshed_in_box(with_sphere(MedialMesh{}, Vec4(0.0, 0.0, 0.0, 1.0)), 0.1);
   ASSERT_EQ(mesh_topology(ball).components, 1u);
   EXPECT_FALSE(skelconv::detail::encloses_empty_space(ball));
-  stage.medial = octahedron_shell();
-  EXPECT_TRUE(skelconv::detail::encloses_empty_space(mesh_stage_unprojected(input, stage, o, 0.04)));
+  EXPECT_TRUE(skelconv::detail::encloses_empty_space(meshed_in_box(octahedron_shell(), 0.04)));
 }
 
 // Room within the budget for a cavity's sphere: a chain A–B–C–D–E along x
