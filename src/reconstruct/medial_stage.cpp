@@ -485,7 +485,11 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // facets across, 2.3% of the diagonal inside the input). The guard lets it through where the
   // unfitted spheres were as far from the input's topology in another way
   // (the dragon's: a piece apart and a tunnel, 2 defects; the fit, its
-  // steps tested, ended at 1, the cavity). Each such cavity is filled by an
+  // steps tested, ended at 1, the cavity), and the guard counts the fit's
+  // rounds as this fill leaves them. Or a bubble of a crease's air that the
+  // result sealed at the crease's mouth, where the input encloses no empty
+  // space (CGAL's man: under the chin, 0.02 across; in the armpits). Each
+  // such cavity is filled by an
   // isolated sphere that holds it (fill_cavities.hpp); the surface is
   // meshed again and kept where it is closer to the input's topology. The
   // spheres count in the budget: where there is no room for them, as many
@@ -494,7 +498,8 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // as long and ended at 2 defects, its own.)
   if (too_much.empty() && stage.meshed) {
     const auto fill = [&](Stage& s, std::size_t room) {
-      std::vector<detail::Cavity> balls = detail::spurious_cavities(*s.meshed, depth, input_hollow, facet, m.kernel_sigma);
+      std::vector<detail::Cavity> balls =
+          detail::spurious_cavities(*s.meshed, depth, input_hollow, facet, m.kernel_sigma);
       if (balls.size() > room) balls.resize(room);
       for (const auto& [ball, euler] : balls) {
         s.medial.isolated.push_back(std::int32_t(s.medial.spheres.size()));
