@@ -203,6 +203,10 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                     "Each medial triangle takes the geometric mean of its spheres' radii, not the arithmetic: a sheet "
                     "fanning out to a thin part no longer fills the crease where that part meets the body (better on "
                     "some shapes, worse on others: docs/reconstruction_medial.md, \"The primitives\")");
+  command->add_flag("--medial-guard-counts-filled-cavities", options.medial.guard_counts_filled_cavities,
+                    "The medial fit's topology guard counts each fitted round as the cavity fill after the fit "
+                    "leaves it, so that bubbles the rounds seal in creases do not stop the fit (better on CGAL's "
+                    "man, worse on its Chinese dragon: docs/reconstruction_medial.md, \"The topology\")");
   command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees of the curve path (default 90)");
   command->add_option("--prune-span", options.prune_span,
                       "Also prune Voronoi vertices whose contact samples span less than this × the diagonal "

@@ -441,6 +441,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // take away (CGAL's femur: a hollow the capped sphere did not close, 2
   // components for 1), and both run again with every cavity counted.
   for (const bool counted_as_filled : {true, false}) {
+    if (counted_as_filled && !m.guard_counts_filled_cavities) continue;
     as_filled = counted_as_filled;
     {
       Stage first = fitted(mesh, &r.fit);
