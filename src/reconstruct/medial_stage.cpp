@@ -408,8 +408,9 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   fit.min_radius = m.min_radius_facets * diagonal / o.measure_divisions;
   fit.geometric_triangle_radius = m.geometric_triangle_radius;
   // The fit's guard (fit_medial_mesh) bounds each round's topology error
-  // by the unfitted spheres'. The unfitted surface is counted as it is
-  // (what the result would be without the fit), each fitted one as the
+  // by the unfitted spheres'. With MedialOptions::guard_counts_filled_cavities
+  // (off by default) the unfitted surface is counted as it is (what the
+  // result would be without the fit), each fitted one as the
   // fill will leave it: the fit's own cavities are no loss, the fill takes
   // them away. Counted as losses, a bubble stops the fit where its rounds
   // seal a crease's mouth (CGAL's man: round 5 of 27 sealed one under the
