@@ -1147,7 +1147,7 @@ TEST(MedialDerivatives, OtherKernelsAreRefused) {
 // inside the input), and one isolated sphere of it closes the hollow: one
 // component, χ 2. Where the input is hollow there too (depth
 // min(1.5 − |x|, |x| − 0.3)), nothing is filled.
-TEST(FillCavities, AHollowTheSumOpensInsideASolidIsFilled) {
+MedialMesh octahedron_shell() {
   MedialMesh shell;
   for (int axis = 0; axis < 3; ++axis)
     for (const double side : {-1.0, 1.0}) {
@@ -1158,37 +1158,97 @@ TEST(FillCavities, AHollowTheSumOpensInsideASolidIsFilled) {
   for (std::int32_t a = 0; a < 6; ++a)
     for (std::int32_t b = a + 1; b < 6; ++b)
       if (a / 2 != b / 2) shell.edges.push_back({a, b});
-  ASSERT_EQ(shell.edges.size(), 12u);
-  ReconstructOptions o;
-  // The grid's box: the input's, a ball of radius 1.5 (its bounding box).
+  return shell;
+}
+
+// The surface of `medial` meshed as the guard meshes it (facet `h`), the
+// grid's box the input's: a ball of radius 1.5's bounding box.
+TriangleMesh meshed_in_box(const MedialMesh& medial, double h) {
   TriangleMesh input;
   input.vertices = {Vec3(-1.5, -1.5, -1.5), Vec3(1.5, 1.5, 1.5), Vec3(1.5, -1.5, 1.5)};
   input.triangles = {{0, 1, 2}};
-  const double h = 0.04;
   Stage stage;
   stage.name = "medial";
-  stage.medial = shell;
-  const TriangleMesh hollow = mesh_stage_unprojected(input, stage, o, h);
+  stage.medial = medial;
+  return mesh_stage_unprojected(input, stage, ReconstructOptions{}, h);
+}
+
+/// `medial` with an isolated sphere `ball` added.
+MedialMesh with_sphere(MedialMesh medial, const Vec4& ball) {
+  medial.isolated.push_back(std::int32_t(medial.spheres.size()));
+  medial.spheres.push_back(ball);
+  return medial;
+}
+
+TEST(FillCavities, AHollowTheSumOpensInsideASolidIsFilled) {
+  const MedialMesh shell = octahedron_shell();
+  ASSERT_EQ(shell.edges.size(), 12u);
+  ReconstructOptions o;
+  const double h = 0.04;
+  const TriangleMesh hollow = meshed_in_box(shell, h);
   const MeshTopology before = mesh_topology(hollow);
   ASSERT_EQ(before.components, 2u);
   ASSERT_EQ(before.euler_characteristic, 4);
 
   const auto solid = [](const Vec3& p) { return 1.5 - p.norm(); };
-  const std::vector<Vec4> balls = skelconv::detail::spurious_cavities(hollow, solid, h, o.medial.kernel_sigma);
+  const std::vector<skelconv::detail::Cavity> balls =
+      skelconv::detail::spurious_cavities(hollow, solid, true, h, o.medial.kernel_sigma);
   ASSERT_EQ(balls.size(), 1u);
-  EXPECT_LT(balls[0].head<3>().norm(), h);
-  EXPECT_GT(balls[0].w(), 0.3);  // the wall's box is ±0.3 (`skelconv mesh` of the same skeleton)
-  EXPECT_LT(balls[0].w(), 0.6);  // the hollow's ball, not the outer wall's (±1.38)
-  EXPECT_LE(o.medial.kernel_sigma * balls[0].w(), solid(balls[0].head<3>()) * (1.0 + 1e-12));
+  EXPECT_LT(balls[0].ball.head<3>().norm(), h);
+  EXPECT_GT(balls[0].ball.w(), 0.3);  // the wall's box is ±0.3 (`skelconv mesh` of the same skeleton)
+  EXPECT_LT(balls[0].ball.w(), 0.6);  // the hollow's ball, not the outer wall's (±1.38)
+  EXPECT_LE(o.medial.kernel_sigma * balls[0].ball.w(), solid(balls[0].ball.head<3>()) * (1.0 + 1e-12));
 
-  stage.medial.isolated.push_back(std::int32_t(stage.medial.spheres.size()));
-  stage.medial.spheres.push_back(balls[0]);
-  const MeshTopology after = mesh_topology(mesh_stage_unprojected(input, stage, o, h));
+  const MeshTopology after = mesh_topology(meshed_in_box(with_sphere(shell, balls[0].ball), h));
   EXPECT_EQ(after.components, 1u);
   EXPECT_EQ(after.euler_characteristic, 2);
 
   const auto hollow_input = [](const Vec3& p) { return std::min(1.5 - p.norm(), p.norm() - 0.3); };
-  EXPECT_TRUE(skelconv::detail::spurious_cavities(hollow, hollow_input, h, o.medial.kernel_sigma).empty());
+  EXPECT_TRUE(skelconv::detail::spurious_cavities(hollow, hollow_input, true, h, o.medial.kernel_sigma).empty());
+}
+
+// A bubble of air the sum closes over (CGAL's man: under the chin, where
+// the result fills the crease's mouth): the octahedron's shell above where
+// the input is air at the centre (its signed distance −0.5 there) but
+// encloses no empty space anywhere. The shell's inner wall is then a
+// component and a χ of 2 that the input has not: the cavity is found at
+// the centre, its wall's χ 2, its ball covering the wall's box (±0.3, so
+// more than 0.3) and its surface within the shell's solid (ρ less than the
+// outer wall's distance along an axis, 1 + 0.4 − a facet at most). One
+// isolated sphere of it closes the bubble: one component, χ 2. Where the
+// input encloses empty space somewhere, the air at the centre may be its
+// own cavity, and nothing is filled.
+TEST(FillCavities, ABubbleOfAirTheSumClosesOverIsFilledWhereTheInputEnclosesNone) {
+  ReconstructOptions o;
+  const double h = 0.04;
+  const TriangleMesh bubble = meshed_in_box(octahedron_shell(), h);
+  ASSERT_EQ(mesh_topology(bubble).components, 2u);
+  ASSERT_EQ(mesh_topology(bubble).euler_characteristic, 4);
+  EXPECT_TRUE(skelconv::detail::encloses_empty_space(bubble));
+
+  const auto air = [](const Vec3& p) { return p.norm() - 0.5; };
+  const std::vector<skelconv::detail::Cavity> found =
+      skelconv::detail::spurious_cavities(bubble, air, false, h, o.medial.kernel_sigma);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].euler_characteristic, 2);
+  EXPECT_LT(found[0].ball.head<3>().norm(), h);
+  EXPECT_GT(found[0].ball.w(), 0.3);
+  EXPECT_LT(found[0].ball.w(), 1.4);
+
+  const MeshTopology after = mesh_topology(meshed_in_box(with_sphere(octahedron_shell(), found[0].ball), h));
+  EXPECT_EQ(after.components, 1u);
+  EXPECT_EQ(after.euler_characteristic, 2);
+
+  EXPECT_TRUE(skelconv::detail::spurious_cavities(bubble, air, true, h, o.medial.kernel_sigma).empty());
+}
+
+// A solid ball's surface encloses no empty space; the octahedron's shell
+// meshed (an outer wall and an inner one facing into the hollow) does.
+TEST(FillCavities, AHollowSurfaceEnclosesEmptySpaceASolidOneNot) {
+  const TriangleMesh ball = meshed_in_box(with_sphere(MedialMesh{}, Vec4(0.0, 0.0, 0.0, 1.0)), 0.1);
+  ASSERT_EQ(mesh_topology(ball).components, 1u);
+  EXPECT_FALSE(skelconv::detail::encloses_empty_space(ball));
+  EXPECT_TRUE(skelconv::detail::encloses_empty_space(meshed_in_box(octahedron_shell(), 0.04)));
 }
 
 // Room within the budget for a cavity's sphere: a chain A–B–C–D–E along x

@@ -7,16 +7,40 @@
 #include <limits>
 #include <numbers>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 #include "union_find.hpp"
 
 namespace skelconv::detail {
 
-std::vector<reconstruct::Vec4> spurious_cavities(const TriangleMesh& meshed,
-                                                 const std::function<double(const Vec3&)>& depth, double margin,
-                                                 double sigma) {
-  // Components: triangles joined through their vertices.
+namespace {
+
+/// A component of a closed mesh: its signed volume (negative for a wall
+/// that faces into the volume it bounds), its vertices and their box, its
+/// χ.
+struct Component {
+  Vec3 origin = Vec3::Zero();
+  double volume = 0.0;
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = -lo;
+  std::vector<std::int32_t> vertices;
+  std::size_t triangles = 0;
+  std::vector<std::pair<std::int32_t, std::int32_t>> edges;
+  long long euler_characteristic() {
+    std::sort(edges.begin(), edges.end());
+    const auto distinct = std::unique(edges.begin(), edges.end()) - edges.begin();
+    return (long long)vertices.size() - (long long)distinct + (long long)triangles;
+  }
+};
+
+/// The components of `meshed` (triangles joined through their vertices),
+/// in the order of their roots (the same mesh, the same components). The
+/// signed volume by the divergence theorem, Σ (a − o) · ((b − o) × (c − o))
+/// / 6 over the triangles, o a vertex of the component, so that a small
+/// cavity far from the coordinates' origin does not sum large terms to a
+/// small volume of the wrong sign.
+std::vector<Component> components_of(const TriangleMesh& meshed) {
   std::vector<std::int32_t> parent(meshed.vertices.size());
   std::iota(parent.begin(), parent.end(), 0);
   const auto find = [&parent](std::int32_t v) { return find_root(parent, v); };
@@ -24,20 +48,6 @@ std::vector<reconstruct::Vec4> spurious_cavities(const TriangleMesh& meshed,
     for (int k = 1; k < 3; ++k)
       if (const std::int32_t a = find(t[0]), b = find(t[std::size_t(k)]); a != b)
         parent[std::size_t(std::max(a, b))] = std::min(a, b);
-  // Per component (keyed by its root), the signed volume (divergence
-  // theorem: Σ (a − o) · ((b − o) × (c − o)) / 6 over the triangles,
-  // negative for a wall that faces into the volume it bounds; o a vertex
-  // of the component, so that a small cavity far from the coordinates'
-  // origin does not sum large terms to a small volume of the wrong sign)
-  // and its vertices' box, in the order of their roots (the same mesh,
-  // the same balls).
-  struct Component {
-    Vec3 origin = Vec3::Zero();
-    double volume = 0.0;
-    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
-    Vec3 hi = -lo;
-    std::vector<std::int32_t> vertices;
-  };
   std::vector<Component> components;
   std::vector<std::int32_t> index(meshed.vertices.size(), -1);
   for (const auto& t : meshed.triangles) {
@@ -51,6 +61,8 @@ std::vector<reconstruct::Vec4> spurious_cavities(const TriangleMesh& meshed,
     const Vec3 b = meshed.vertices[std::size_t(t[1])] - c.origin;
     const Vec3 d = meshed.vertices[std::size_t(t[2])] - c.origin;
     c.volume += a.dot(b.cross(d)) / 6.0;
+    ++c.triangles;
+    for (std::size_t k = 0; k < 3; ++k) c.edges.push_back(std::minmax(t[k], t[(k + 1) % 3]));
   }
   std::vector<bool> seen(meshed.vertices.size(), false);
   for (const auto& t : meshed.triangles)
@@ -62,19 +74,54 @@ std::vector<reconstruct::Vec4> spurious_cavities(const TriangleMesh& meshed,
       c.hi = c.hi.cwiseMax(meshed.vertices[std::size_t(v)]);
       c.vertices.push_back(v);
     }
-  std::vector<reconstruct::Vec4> balls;
-  if (components.size() < 2) return balls;  // a lone surface bounds no cavity
-  for (const Component& c : components) {
+  return components;
+}
+
+}  // namespace
+
+bool encloses_empty_space(const TriangleMesh& surface) {
+  const std::vector<Component> components = components_of(surface);
+  return components.size() > 1 &&
+         std::any_of(components.begin(), components.end(), [](const Component& c) { return c.volume < 0.0; });
+}
+
+std::vector<Cavity> spurious_cavities(const TriangleMesh& meshed, const std::function<double(const Vec3&)>& depth,
+                                      bool input_hollow, double margin, double sigma) {
+  std::vector<Component> components = components_of(meshed);
+  std::vector<Cavity> cavities;
+  if (components.size() < 2) return cavities;  // a lone surface bounds no cavity
+  // The distance from `centre` to the nearest vertex of the outer surface
+  // (the components bounding a positive volume).
+  const auto to_outer_surface = [&](const Vec3& centre) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Component& c : components)
+      if (c.volume > 0.0)
+        for (const std::int32_t v : c.vertices)
+          nearest = std::min(nearest, (meshed.vertices[std::size_t(v)] - centre).norm());
+    return nearest;
+  };
+  for (Component& c : components) {
     if (!(c.volume < 0.0)) continue;
     const Vec3 centre = 0.5 * (c.lo + c.hi);
     double radius = 0.0;
     for (const std::int32_t v : c.vertices)
       radius = std::max(radius, (meshed.vertices[std::size_t(v)] - centre).norm());
+    // Inside the input the sphere's support stays within its depth, so the
+    // surface near the input's does not move. Outside it, the surface about
+    // a bubble is the seal the reconstruction put over a crease's mouth,
+    // not the input's: the sphere's own surface (f = iso) stays within the
+    // outer wall, and only its tail reaches beyond.
     const double inside = depth(centre);
+    double largest = 0.0;
     if (inside > 0.0)
-      balls.push_back({centre.x(), centre.y(), centre.z(), std::min(radius + margin, inside / sigma)});
+      largest = inside / sigma;
+    else if (!input_hollow)
+      largest = to_outer_surface(centre);
+    if (!(largest > 0.0)) continue;
+    cavities.push_back({{centre.x(), centre.y(), centre.z(), std::min(radius + margin, largest)},
+                        c.euler_characteristic()});
   }
-  return balls;
+  return cavities;
 }
 
 std::size_t drop_smallest_primitives(reconstruct::MedialMesh& mesh, std::size_t count, double sigma) {

@@ -13,27 +13,49 @@
 
 namespace skelconv::detail {
 
+/// A cavity of the reconstruction to fill: the ball of the isolated sphere
+/// that holds it, and the χ of its wall (a component of the meshed surface;
+/// 2 for a bubble), which the topology guard takes off the surface's as the
+/// fill will.
+struct Cavity {
+  reconstruct::Vec4 ball;
+  long long euler_characteristic = 0;
+};
+
 /// A closed component of `meshed` (the surface f = iso of a medial mesh,
 /// its triangles facing out of {f ≥ iso}, as the grid mesher writes them)
 /// that bounds a negative volume is the wall of a cavity: a pocket where
-/// f < iso inside the reconstruction. Where the input is solid at the
-/// centre of the wall's bounding box (`depth`, the input's signed
-/// distance, positive inside), the cavity is the fit's, not the input's:
-/// the fit shrank the primitives about it until their sum fell below iso
-/// between them, and no surface point sees it.
+/// f < iso inside the reconstruction. It is the fit's, not the input's,
+///   * where the input is solid at the centre of the wall's bounding box
+///     (`depth`, the input's signed distance, positive inside): the fit
+///     shrank the primitives about it until their sum fell below iso
+///     between them, and no surface point sees it; or
+///   * where the input encloses no empty space at all (`input_hollow`
+///     false) and the centre is outside it: a bubble of the air in a
+///     crease (between a chin and a neck, in an armpit) that the
+///     reconstruction closed over at the crease's mouth. No input has
+///     such a bubble, so it is a component and a χ of 2 too many.
 ///
 /// Returns, per such cavity, a ball for an isolated sphere (a compact
 /// point, f = iso at its radius ρ, support σ ρ, σ = `sigma`) about that
 /// centre: ρ the distance to the wall's farthest vertex plus `margin` (the
 /// unprojected wall lies within a facet of f = iso), where the sphere alone
-/// is ≥ iso on the whole cavity; but at most depth / σ, so that its support
-/// stays inside the input and the reconstruction's surface near the
-/// input's does not move. Such a smaller sphere covers the middle of the
+/// is ≥ iso on the whole cavity; but inside the input at most depth / σ,
+/// so that its support stays inside the input and the reconstruction's
+/// surface near the input's does not move, and outside it at most the
+/// distance to the nearest vertex of the reconstruction's outer surface
+/// (the components bounding a positive volume): the surface there is the
+/// reconstruction's seal over the crease, and the sphere's own surface
+/// stays within it. Such a smaller sphere covers the middle of the
 /// cavity, and its field added to the wall's (near iso there) closes the
 /// rest, mostly: the caller meshes again to see.
-std::vector<reconstruct::Vec4> spurious_cavities(const TriangleMesh& meshed,
-                                                 const std::function<double(const Vec3&)>& depth, double margin,
-                                                 double sigma);
+std::vector<Cavity> spurious_cavities(const TriangleMesh& meshed, const std::function<double(const Vec3&)>& depth,
+                                      bool input_hollow, double margin, double sigma);
+
+/// Whether a closed surface encloses empty space: a component of it bounds
+/// a negative volume (faces into what it bounds), as a hollow ball's inner
+/// wall does.
+bool encloses_empty_space(const TriangleMesh& surface);
 
 /// Room for `count` more primitives within the budget: drops the `count`
 /// tube edges or triangles of `mesh` with the smallest supports (the

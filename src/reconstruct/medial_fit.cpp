@@ -733,6 +733,12 @@ bool fit_stalled(const std::vector<double>& values, double stall_fall, int stall
   return values.back() > std::pow(1.0 - stall_fall, stall_rounds) * before;
 }
 
+MedialMesh fit_start(MedialMesh mesh, const MedialFitOptions& o, const Clearance& clearance) {
+  for (Vec4& sphere : mesh.spheres) sphere.w() = std::max(sphere.w(), o.min_radius);
+  limit_radius_slope(mesh, o.max_radius_slope, clearance);
+  return mesh;
+}
+
 MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& surface_points,
                            const std::vector<Vec3>& inside_points, const MedialField& field_of,
                            const MedialFitOptions& o, MedialFitReport* report,
@@ -760,8 +766,7 @@ MedialMesh fit_medial_mesh(MedialMesh mesh, const std::vector<WeightedPoint>& su
   // input's points see only where the surface misses them, not where a
   // spike of the reconstruction sticks out into empty space).
   const std::vector<Vec4> start = mesh.spheres;
-  for (Vec4& sphere : mesh.spheres) sphere.w() = std::max(sphere.w(), o.min_radius);
-  limit_radius_slope(mesh, o.max_radius_slope, clearance);
+  mesh = fit_start(std::move(mesh), o, clearance);
   // The stages in order (the first stage's rounds: its first-order start's
   // and its Newton phase's together).
   std::vector<Planned> plan;

@@ -350,6 +350,16 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // (CGAL's camel: its hind legs fused and a hollow opened in its head,
   // which the fit's guard took for one defect, fewer than a detached hoof's).
   const MeshTopology input_topology = mesh_topology(surface);
+  const bool input_hollow = detail::encloses_empty_space(surface);
+  const auto depth = [&shape](const Vec3& c) { return shape.signed_distance(c); };
+  const auto after_fill = [&](const TriangleMesh& meshed) {
+    MeshTopology t = mesh_topology(meshed);
+    for (const detail::Cavity& c : detail::spurious_cavities(meshed, depth, input_hollow, facet, m.kernel_sigma)) {
+      --t.components;
+      t.euler_characteristic -= c.euler_characteristic;
+    }
+    return t;
+  };
   // The guard needs the topology alone: it meshes without projecting the
   // vertices (mesh_stage_unprojected, the same triangles), about a sixth
   // of a meshing's work less. Each surface it meshes is kept with its
@@ -365,7 +375,11 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // taken again, moved to the back as a new one would be, and nothing is
   // meshed (the mesh, and so its topology, is a function of the skeleton).
   std::vector<std::pair<MedialMesh, TriangleMesh>> meshed;
-  const TopologyError topology_error = [&](const MedialMesh& medial) {
+  // `as_filled`: a cavity of the surface that fill_cavities.hpp fills
+  // after the fit (a hollow inside the input's solid, or a bubble of a
+  // crease's air where the input encloses none) counted as the fill
+  // leaves it, one component and the cavity's χ fewer each (after_fill).
+  const auto defects = [&](const MedialMesh& medial, bool as_filled) {
     const auto known =
         std::find_if(meshed.begin(), meshed.end(), [&medial](const auto& entry) { return same(entry.first, medial); });
     if (known != meshed.end()) {
@@ -376,9 +390,10 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
       s.medial = medial;
       meshed.emplace_back(medial, mesh_stage_unprojected(surface, s, o));
     }
-    const MeshTopology t = mesh_topology(meshed.back().second);
-    return topology_defects(input_topology, t);
+    return topology_defects(input_topology,
+                            as_filled ? after_fill(meshed.back().second) : mesh_topology(meshed.back().second));
   };
+  const TopologyError topology_error = [&](const MedialMesh& medial) { return defects(medial, false); };
   // The guard meshes the skeleton as the measure does, so it is off where
   // the measure would refuse that work (--measure-budget): the fit never
   // changes the primitive count, so one estimate holds for every round.
@@ -399,10 +414,26 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   MedialFitOptions fit = m.fit;
   fit.min_radius = m.min_radius_facets * diagonal / o.measure_divisions;
   fit.triangle_radius = m.triangle_radius;
-  const TopologyError guard = too_much.empty() ? topology_error : TopologyError{};
+  // The fit's guard (fit_medial_mesh) bounds each round's topology error
+  // by the unfitted spheres'. With MedialOptions::guard_counts_filled_cavities
+  // (off by default) the unfitted surface is counted as it is (what the
+  // result would be without the fit), each fitted one as the
+  // fill will leave it: the fit's own cavities are no loss, the fill takes
+  // them away. Counted as losses, a bubble stops the fit where its rounds
+  // seal a crease's mouth (CGAL's man: round 5 of 27 sealed one under the
+  // chin, the fit stopped after round 4 at 3.61 / 0.469 and kept its
+  // bubble); the unfitted surface counted as filled too bounds the rounds
+  // by a tunnel of the unfitted spheres that the input's sub-facet tunnels
+  // make look like progress (the man's first round closed it: the fit
+  // kept round 0).
+  bool as_filled = true;
   const auto fitted = [&](const MedialMesh& start, MedialFitReport* fit_report) {
     Stage s;
     s.name = "medial";
+    const std::vector<Vec4> unfitted = fit_start(start, fit, clearance).spheres;
+    TopologyError guard;
+    if (too_much.empty())
+      guard = [&](const MedialMesh& medial) { return defects(medial, as_filled && medial.spheres != unfitted); };
     if (!start.spheres.empty())
       s.medial = fit_medial_mesh(start, points, inside, field_of, fit, fit_report, o.progress, guard, clearance,
                                  point_parts);
@@ -411,109 +442,137 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     meshed.clear();
     return s;
   };
-  {
-    Stage first = fitted(mesh, &r.fit);
-    stage.medial = std::move(first.medial);
-    stage.meshed = std::move(first.meshed);
-  }
-  // A tunnel too many: a hole in a sheet of the medial mesh that the sum
-  // of fields leaves open, where the input has none (a wall thinner than
-  // the samples' spacing, or pruning, punched it). The medial mesh again,
-  // with every loop the input holds a disc across closed
-  // (QuadricOptions::inside_samples), fitted again; kept where its
-  // topology is closer to the input's. Only then: elsewhere the sum of
-  // fields covers such holes, and the result stays as it was.
-  // (Where the input touches itself at a vertex, the most it may have:
-  // every such point read as a neck, topology_defects.)
-  const auto handles_doubled = [](const MeshTopology& t) {
-    return 2 * (long long)t.components - t.euler_characteristic;
-  };
-  if (guard && m.close_inside_samples > 0 && stage.meshed &&
-      handles_doubled(mesh_topology(*stage.meshed)) >
-          handles_doubled(input_topology) + (long long)input_topology.pinches) {
-    const long long before = topology_defects(input_topology, mesh_topology(*stage.meshed));
-    if (o.progress)
-      o.progress(fmt::format("medial path: the result has more tunnels than the input (Euler characteristic {} "
-                             "against {}): the medial mesh again, its loops across the input closed",
-                             mesh_topology(*stage.meshed).euler_characteristic, input_topology.euler_characteristic));
-    MedialFitReport again_report;
-    Stage again = fitted(medial_mesh(m.close_inside_samples), &again_report);
-    if (!again.meshed && !again.medial.spheres.empty()) {
-      topology_error(again.medial);
-      again.meshed = std::move(meshed.back().second);
-      meshed.clear();
+  // The fit and the fill, first with the guard counting the fit's rounds
+  // as the fill leaves them (`as_filled`); where the fill then leaves a
+  // cavity open and the result has more components than the unfitted
+  // spheres', the cavity the guard let through was no loss the fill could
+  // take away (CGAL's femur: a hollow the capped sphere did not close, 2
+  // components for 1), and both run again with every cavity counted.
+  for (const bool counted_as_filled : {true, false}) {
+    if (counted_as_filled && !m.guard_counts_filled_cavities) continue;
+    as_filled = counted_as_filled;
+    {
+      Stage first = fitted(mesh, &r.fit);
+      stage.medial = std::move(first.medial);
+      stage.meshed = std::move(first.meshed);
     }
-    const long long after =
-        again.meshed ? topology_defects(input_topology, mesh_topology(*again.meshed)) : before;
-    if (o.progress)
-      o.progress(fmt::format("medial path: topology defects {} -> {}{}: {}", before, after,
-                             again.meshed ? fmt::format(" (Euler characteristic {})",
-                                                        mesh_topology(*again.meshed).euler_characteristic)
-                                          : std::string(),
-                             after < before ? "kept" : "not kept"));
-    if (after < before) {
-      stage.medial = std::move(again.medial);
-      stage.meshed = std::move(again.meshed);
-      r.fit = again_report;
-    }
-  }
-  // A cavity: the fit shrank the sheets about a place inside a solid part
-  // of the input until their sum fell below iso there, and no surface point
-  // sees the hollow (CGAL's Chinese dragon: a wall of 100 triangles, 3
-  // facets across, 2.3% of the diagonal inside the input). The guard lets it through where the
-  // unfitted spheres were as far from the input's topology in another way
-  // (the dragon's: a piece apart and a tunnel, 2 defects; the fit, its
-  // steps tested, ended at 1, the cavity). Each such cavity is filled by an
-  // isolated sphere that holds it (fill_cavities.hpp); the surface is
-  // meshed again and kept where it is closer to the input's topology. The
-  // spheres count in the budget: where there is no room for them, as many
-  // of the smallest primitives are dropped. (Simplifying the medial mesh
-  // to fewer primitives and fitting it again instead took the dragon twice
-  // as long and ended at 2 defects, its own.)
-  if (guard && stage.meshed) {
-    const auto depth = [&shape](const Vec3& c) { return shape.signed_distance(c); };
-    const auto fill = [&](Stage& s, std::size_t room) {
-      std::vector<Vec4> balls = detail::spurious_cavities(*s.meshed, depth, facet, m.kernel_sigma);
-      if (balls.size() > room) balls.resize(room);
-      for (const Vec4& ball : balls) {
-        s.medial.isolated.push_back(std::int32_t(s.medial.spheres.size()));
-        s.medial.spheres.push_back(ball);
-        if (part_total > 1) s.medial.parts.push_back(part_of(ball.head<3>()));
-      }
-      if (!balls.empty()) {
-        topology_error(s.medial);
-        s.meshed = std::move(meshed.back().second);
+    // A tunnel too many: a hole in a sheet of the medial mesh that the sum
+    // of fields leaves open, where the input has none (a wall thinner than
+    // the samples' spacing, or pruning, punched it). The medial mesh again,
+    // with every loop the input holds a disc across closed
+    // (QuadricOptions::inside_samples), fitted again; kept where its
+    // topology is closer to the input's. Only then: elsewhere the sum of
+    // fields covers such holes, and the result stays as it was.
+    // (Where the input touches itself at a vertex, the most it may have:
+    // every such point read as a neck, topology_defects.)
+    const auto handles_doubled = [](const MeshTopology& t) {
+      return 2 * (long long)t.components - t.euler_characteristic;
+    };
+    if (too_much.empty() && m.close_inside_samples > 0 && stage.meshed &&
+        handles_doubled(mesh_topology(*stage.meshed)) >
+            handles_doubled(input_topology) + (long long)input_topology.pinches) {
+      const long long before = topology_defects(input_topology, mesh_topology(*stage.meshed));
+      if (o.progress)
+        o.progress(fmt::format("medial path: the result has more tunnels than the input (Euler characteristic {} "
+                               "against {}): the medial mesh again, its loops across the input closed",
+                               mesh_topology(*stage.meshed).euler_characteristic, input_topology.euler_characteristic));
+      MedialFitReport again_report;
+      Stage again = fitted(medial_mesh(m.close_inside_samples), &again_report);
+      if (!again.meshed && !again.medial.spheres.empty()) {
+        topology_error(again.medial);
+        again.meshed = std::move(meshed.back().second);
         meshed.clear();
       }
-      return balls.size();
-    };
-    const std::size_t cavities = detail::spurious_cavities(*stage.meshed, depth, facet, m.kernel_sigma).size();
-    if (cavities > 0) {
-      const long long before = topology_defects(input_topology, mesh_topology(*stage.meshed));
-      Stage filled;
-      filled.medial = stage.medial;
-      filled.meshed = stage.meshed;
-      const std::size_t used = primitives(stage.medial);
-      const std::size_t dropped = used + cavities > m.budget
-                                      ? detail::drop_smallest_primitives(filled.medial, used + cavities - m.budget,
-                                                                         m.kernel_sigma)
-                                      : 0;
-      const std::size_t added = fill(filled, m.budget - std::min(m.budget, primitives(filled.medial)));
-      const long long after = added > 0 ? topology_defects(input_topology, mesh_topology(*filled.meshed)) : before;
+      const long long after =
+          again.meshed ? topology_defects(input_topology, mesh_topology(*again.meshed)) : before;
       if (o.progress)
-        o.progress(fmt::format("medial path: {} cavities inside the input filled by as many isolated spheres{}; "
-                               "topology defects {} -> {}: {}",
-                               added,
-                               dropped > 0 ? fmt::format(" ({} smallest primitives dropped to make room within the "
-                                                         "budget of {})",
-                                                         dropped, m.budget)
-                                           : std::string(),
-                               before, after, after < before ? "kept" : "not kept"));
+        o.progress(fmt::format("medial path: topology defects {} -> {}{}: {}", before, after,
+                               again.meshed ? fmt::format(" (Euler characteristic {})",
+                                                          mesh_topology(*again.meshed).euler_characteristic)
+                                            : std::string(),
+                               after < before ? "kept" : "not kept"));
       if (after < before) {
-        stage.medial = std::move(filled.medial);
-        stage.meshed = std::move(filled.meshed);
+        stage.medial = std::move(again.medial);
+        stage.meshed = std::move(again.meshed);
+        r.fit = again_report;
       }
     }
+    // A cavity: the fit shrank the sheets about a place inside a solid part
+    // of the input until their sum fell below iso there, and no surface point
+    // sees the hollow (CGAL's Chinese dragon: a wall of 100 triangles, 3
+    // facets across, 2.3% of the diagonal inside the input). The guard lets it through where the
+    // unfitted spheres were as far from the input's topology in another way
+    // (the dragon's: a piece apart and a tunnel, 2 defects; the fit, its
+    // steps tested, ended at 1, the cavity), and the guard counts the fit's
+    // rounds as this fill leaves them. Or a bubble of a crease's air that the
+    // result sealed at the crease's mouth, where the input encloses no empty
+    // space (CGAL's man: under the chin, 0.02 across; in the armpits). Each
+    // such cavity is filled by an
+    // isolated sphere that holds it (fill_cavities.hpp); the surface is
+    // meshed again and kept where it is closer to the input's topology. The
+    // spheres count in the budget: where there is no room for them, as many
+    // of the smallest primitives are dropped. (Simplifying the medial mesh
+    // to fewer primitives and fitting it again instead took the dragon twice
+    // as long and ended at 2 defects, its own.)
+    if (too_much.empty() && stage.meshed) {
+      const auto fill = [&](Stage& s, std::size_t room) {
+        std::vector<detail::Cavity> balls =
+            detail::spurious_cavities(*s.meshed, depth, input_hollow, facet, m.kernel_sigma);
+        if (balls.size() > room) balls.resize(room);
+        for (const auto& [ball, euler] : balls) {
+          s.medial.isolated.push_back(std::int32_t(s.medial.spheres.size()));
+          s.medial.spheres.push_back(ball);
+          if (part_total > 1) s.medial.parts.push_back(part_of(ball.head<3>()));
+        }
+        if (!balls.empty()) {
+          topology_error(s.medial);
+          s.meshed = std::move(meshed.back().second);
+          meshed.clear();
+        }
+        return balls.size();
+      };
+      const std::size_t cavities =
+          detail::spurious_cavities(*stage.meshed, depth, input_hollow, facet, m.kernel_sigma).size();
+      if (cavities > 0) {
+        const long long before = topology_defects(input_topology, mesh_topology(*stage.meshed));
+        Stage filled;
+        filled.medial = stage.medial;
+        filled.meshed = stage.meshed;
+        const std::size_t used = primitives(stage.medial);
+        const std::size_t dropped = used + cavities > m.budget
+                                        ? detail::drop_smallest_primitives(filled.medial, used + cavities - m.budget,
+                                                                           m.kernel_sigma)
+                                        : 0;
+        const std::size_t added = fill(filled, m.budget - std::min(m.budget, primitives(filled.medial)));
+        const long long after = added > 0 ? topology_defects(input_topology, mesh_topology(*filled.meshed)) : before;
+        if (o.progress)
+          o.progress(fmt::format("medial path: {} cavities of the result (hollows inside the input, bubbles of its "
+                                 "creases' air) filled by as many isolated spheres{}; topology defects {} -> {}: {}",
+                                 added,
+                                 dropped > 0 ? fmt::format(" ({} smallest primitives dropped to make room within the "
+                                                           "budget of {})",
+                                                           dropped, m.budget)
+                                             : std::string(),
+                                 before, after, after < before ? "kept" : "not kept"));
+        if (after < before) {
+          stage.medial = std::move(filled.medial);
+          stage.meshed = std::move(filled.meshed);
+        }
+      }
+    }
+    if (!as_filled || !stage.meshed) break;
+    if (detail::spurious_cavities(*stage.meshed, depth, input_hollow, facet, m.kernel_sigma).empty()) break;
+    Stage unfitted;
+    unfitted.name = "medial";
+    unfitted.medial = fit_start(mesh, fit, clearance);
+    const std::size_t start_components = mesh_topology(mesh_stage_unprojected(surface, unfitted, o)).components;
+    const std::size_t end_components = mesh_topology(*stage.meshed).components;
+    if (end_components <= start_components) break;
+    if (o.progress)
+      o.progress(fmt::format("medial path: a cavity left open, {} components where the unfitted spheres have {}: "
+                             "fitted again with every cavity counted as a topology defect",
+                             end_components, start_components));
+    r.fit = MedialFitReport{};
   }
   // A thin protrusion kept (TipOptions) that leaves the result farther
   // from the input's topology than the input has: its piece, apart from

@@ -236,6 +236,11 @@ bool fit_stalled(const std::vector<double>& values, double stall_fall, int stall
 /// The field of a medial mesh.
 using MedialField = std::function<Skeleton(const MedialMesh&)>;
 
+/// The spheres fit_medial_mesh starts from (its round 0, the topology
+/// guard's bound): each radius raised to options.min_radius, then the
+/// radius bound applied (limit_radius_slope, with `clearance`).
+MedialMesh fit_start(MedialMesh mesh, const MedialFitOptions& options, const Clearance& clearance = {});
+
 /// How far the surface of a medial mesh is from the input's topology
 /// (meshed at the user's resolution): 0 when its components and Euler
 /// characteristic are the input's, more the more they differ.
