@@ -72,7 +72,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     const PruningReport pruned =
         prune_medial_graph(g, m.prune_angle_degrees * std::numbers::pi / 180.0, 0.05,
                            std::max(m.prune_span, o.prune_span) * diagonal, m.lobes,
-                           TipOptions{m.tip_reach * diagonal / m.sample_divisions, m.tip_thinness});
+                           TipOptions{m.tip_reach * diagonal / m.sample_divisions, m.tip_thinness, m.tip_connect});
     r.pruned = pruned.vertices_removed;
     tips_kept = pruned.tips_kept;
     if (o.progress && pruned.lobes_kept > 0)
@@ -82,6 +82,10 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
       o.progress(fmt::format("medial path: {} small pieces kept as thin protrusions (a ball reaching {} sample "
                              "spacings and {} radii beyond the large pieces')",
                              pruned.tips_kept, m.tip_reach, m.tip_thinness));
+    if (o.progress && pruned.tips_connected + pruned.tips_bridged > 0)
+      o.progress(fmt::format("medial path: thin protrusions joined to the body again: {} along their medial path ({} "
+                             "pruned vertices kept), {} by an edge between overlapping balls",
+                             pruned.tips_connected, pruned.connecting_vertices, pruned.tips_bridged));
   };
   prune(graph);
   // Thin walls sampled finer (thin_walls.hpp), the rest of the shape as it

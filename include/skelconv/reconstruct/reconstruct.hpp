@@ -60,6 +60,10 @@ struct MedialOptions {
   /// 0 = none kept.
   double tip_reach = 0.5;
   double tip_thinness = 2.0;
+  /// Each thin protrusion kept is joined again to the body along its
+  /// pruned medial path (TipOptions::connect): kept apart, a tail thinner
+  /// than the measuring mesh's facet came back in two pieces (CGAL's camel).
+  bool tip_connect = true;
   /// The samples at a protrusion's end that pruning left out of every ball's
   /// reach (src/reconstruct/unreached_tips.hpp: a gap of at least
   /// `tip_end_reach` sample spacings and `tip_end_thinness` × the radius of
