@@ -107,8 +107,10 @@ bool reaches_beyond(const MedialGraph& graph, const std::vector<std::size_t>& la
 /// stops there), the piece is bridged by a new edge, without a dual facet
 /// ({-1, -1, -1}), between its ball and an anchored ball that overlap, the
 /// pair whose centres are closest: two overlapping inscribed balls hold the
-/// segment between their centres, so the edge stays inside the shape. A
-/// piece whose balls overlap none of the anchored ones stays apart.
+/// segment between their centres, so the edge stays inside the shape; both
+/// balls in the same closed part of the surface (a Voronoi ball may reach a
+/// little past a curved surface, into a close part beside it). A piece
+/// whose balls overlap none of the anchored ones stays apart.
 void connect_tips(MedialGraph& graph, const std::vector<std::int32_t>& root, const std::vector<bool>& anchored,
                   const std::vector<bool>& tipped, std::vector<bool>& keep, PruningReport& report) {
   const std::size_t n = graph.vertices.size();
@@ -160,8 +162,9 @@ void connect_tips(MedialGraph& graph, const std::vector<std::int32_t>& root, con
   for (std::size_t v = 0; v < n; ++v) {
     if (!tipped[v] || nearest.count(root[v]) > 0) continue;
     const MedialVertex& ball = graph.vertices[v];
+    const std::int32_t part = vertex_part(graph, v);
     for (std::size_t u = 0; u < n; ++u) {
-      if (!anchored[u]) continue;
+      if (!anchored[u] || vertex_part(graph, u) != part) continue;
       const MedialVertex& other = graph.vertices[u];
       const double d = (other.centre - ball.centre).norm();
       if (d >= ball.radius + other.radius) continue;
