@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <numeric>
 #include <cstring>
 
 #include <gtest/gtest.h>
@@ -164,6 +165,93 @@ TEST(Pruning, SmallPiecesKeptAsThinProtrusions) {
   ASSERT_EQ(graph.vertices.size(), 103u);
   EXPECT_EQ(graph.vertices[102].centre, Vec3(20, 1.7, 0));
   EXPECT_EQ(graph.edges.size(), 101u);
+}
+
+/// A medial vertex at `centre` of `radius` whose four contact samples lie
+/// within a cap of the sphere about +z, 0.1 × radius from its pole: its
+/// contacts span at most 0.2 × radius, θ ≤ 2 asin(0.1) ≈ 11.5°, pruned by
+/// any angle above that.
+void add_shallow_ball(MedialGraph& graph, const Vec3& centre, double radius) {
+  const auto first = std::int32_t(graph.samples.size());
+  const double side = 0.1 * radius, up = std::sqrt(radius * radius - side * side);
+  graph.samples.push_back(centre + Vec3(side, 0, up));
+  graph.samples.push_back(centre + Vec3(-side, 0, up));
+  graph.samples.push_back(centre + Vec3(0, side, up));
+  graph.samples.push_back(centre + Vec3(0, 0, radius));
+  graph.vertices.push_back({centre, radius, {first, first + 1, first + 2, first + 3}});
+}
+
+/// The number of connected pieces of `graph` (its vertices joined by its edges).
+std::size_t graph_pieces(const MedialGraph& graph) {
+  std::vector<std::size_t> parent(graph.vertices.size());
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  const auto find = [&parent](std::size_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const MedialEdge& e : graph.edges) parent[find(std::size_t(e.a))] = find(std::size_t(e.b));
+  std::size_t count = 0;
+  for (std::size_t v = 0; v < parent.size(); ++v) count += find(v) == v;
+  return count;
+}
+
+// A tail the angle cut in the middle, joined to the body again along its
+// pruned medial path. The body is the chain of 100 balls of radius 1 along
+// x (centres (0.4 i, 0, 0); vertex 50 at (20, 0, 0)). The tail hangs from
+// vertex 50 along y: two vertices the angle prunes (radius 0.1 at (20, 1.1,
+// 0) and (20, 1.3, 0), contacts within 0.02: θ ≈ 11.5° < 45°), then the
+// tail's end, three balls of radius 0.1 at y = 1.5, 1.7, 1.9 (θ = π), a
+// small piece (3 < 5% of 100) reaching 0.1 + (1.9 − 1) = 1.0 beyond the
+// chain: kept as a tip. Edges 50 – 1.1 – 1.3 – 1.5 – 1.7 – 1.9, and a
+// detour from the tail's end (20, 1.5, 0) through a pruned vertex at (21.5,
+// 1.5, 0) to the chain's vertex 52 at (20.8, 0, 0): 1.5 + √(0.7² + 1.5²) ≈
+// 3.16 long, against 0.2 + 0.2 + 1.1 = 1.5 through the cut. Two more tips
+// with no edge to the rest, out of the graph's reach:
+// - a tail whose graph broke off: balls of radius 0.1 at (10, 1.05 / 1.25
+//   / 1.45, 0), reaching 0.1 + 0.45 beyond the chain. Its first ball
+//   overlaps the chain's vertex 25 at (10, 0, 0) (1.05 < 1 + 0.1) and no
+//   other (the chain's next centres are √(0.4² + 1.05²) ≈ 1.124 away):
+//   bridged by the edge 25 – 106;
+// - a teat at (30, 1.3 / 1.5 / 1.7, 0): its nearest chain ball, at (30, 0,
+//   0), is 1.3 > 1 + 0.1 away: no overlap, it stays apart.
+// Without `connect`: 100 + 3 + 3 + 3 vertices in four pieces. With it: the
+// two cut vertices come back (not the detour's), 111 vertices, the two
+// tails one piece with the body: two pieces, 99 + 5 + (1 + 2) + 2 edges.
+TEST(Pruning, ThinProtrusionsAreJoinedToTheBodyAlongTheirPrunedPath) {
+  MedialGraph graph;
+  add_chain(graph, 100, 0.4);
+  add_shallow_ball(graph, Vec3(20, 1.1, 0), 0.1);  // 100
+  add_shallow_ball(graph, Vec3(20, 1.3, 0), 0.1);  // 101
+  for (const double y : {1.5, 1.7, 1.9}) add_ball(graph, Vec3(20, y, 0), 0.1);  // 102, 103, 104
+  add_shallow_ball(graph, Vec3(21.5, 1.5, 0), 0.1);  // 105, the detour
+  for (const double y : {1.05, 1.25, 1.45}) add_ball(graph, Vec3(10, y, 0), 0.1);  // 106, 107, 108
+  for (const double y : {1.3, 1.5, 1.7}) add_ball(graph, Vec3(30, y, 0), 0.1);  // 109, 110, 111
+  for (const auto& [a, b] : {std::pair{50, 100}, {100, 101}, {101, 102}, {102, 103}, {103, 104}, {102, 105},
+                             {105, 52}, {106, 107}, {107, 108}, {109, 110}, {110, 111}})
+    graph.edges.push_back({a, b, {0, 1, 2}});
+  MedialGraph apart = graph;
+  const PruningReport kept_apart =
+      prune_medial_graph(apart, std::numbers::pi / 4, 0.05, 0.0, LobeOptions{}, TipOptions{0.5, 2.0, false});
+  EXPECT_EQ(kept_apart.vertices_removed, 3u);
+  EXPECT_EQ(kept_apart.tips_kept, 3u);
+  EXPECT_EQ(kept_apart.tips_connected + kept_apart.tips_bridged, 0u);
+  EXPECT_EQ(apart.vertices.size(), 109u);
+  EXPECT_EQ(graph_pieces(apart), 4u);
+  const PruningReport report =
+      prune_medial_graph(graph, std::numbers::pi / 4, 0.05, 0.0, LobeOptions{}, TipOptions{0.5, 2.0, true});
+  EXPECT_EQ(report.tips_kept, 3u);
+  EXPECT_EQ(report.tips_connected, 1u);
+  EXPECT_EQ(report.connecting_vertices, 2u);
+  EXPECT_EQ(report.tips_bridged, 1u);
+  ASSERT_EQ(graph.vertices.size(), 111u);
+  EXPECT_EQ(graph.vertices[100].centre, Vec3(20, 1.1, 0));
+  EXPECT_EQ(graph.vertices[101].centre, Vec3(20, 1.3, 0));
+  EXPECT_EQ(graph.vertices[105].centre, Vec3(10, 1.05, 0));
+  EXPECT_EQ(graph.vertices[108].centre, Vec3(30, 1.3, 0));
+  ASSERT_EQ(graph.edges.size(), 109u);
+  EXPECT_EQ(graph.edges.back().a, 25);
+  EXPECT_EQ(graph.edges.back().b, 105);
+  EXPECT_EQ(graph_pieces(graph), 2u);
 }
 
 // The islands rule measures a piece against the largest piece of its own

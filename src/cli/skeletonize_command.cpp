@@ -195,6 +195,19 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                     "(a medial sheet under 1.5 sample spacings thick and about 6 or more across), so that the wall's "
                     "sheet is not a net of holes; on by default, --no-medial-thin-walls leaves every part at one "
                     "spacing (docs/reconstruction_medial.md, \"Thin walls\")");
+  command
+      ->add_option_function<std::string>(
+          "--medial-join-tips",
+          [&options](const std::string& when) {
+            options.medial.tip_join = when == "never"    ? reconstruct::TipJoin::never
+                                      : when == "always" ? reconstruct::TipJoin::always
+                                                         : reconstruct::TipJoin::where_apart;
+          },
+          "When the medial path joins each thin protrusion it keeps (a piece the pruning cut off: a tail, a teat) to "
+          "the body again, along the pruned medial path or by an edge between overlapping balls: where-apart "
+          "(default: only where the result with them apart has more components than the input, the medial path "
+          "run again), always, never (docs/reconstruction_medial.md, \"Thin protrusions\")")
+      ->check(CLI::IsMember({"never", "where-apart", "always"}));
   command->add_flag("--medial-grow-within-input", options.medial.grow_within_input,
                     "Where the medial fit's radius bound finds a ball inside its neighbour's, it first grows the "
                     "smaller up to its centre's distance to the input, then shrinks the larger (better on some "

@@ -72,7 +72,8 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     const PruningReport pruned =
         prune_medial_graph(g, m.prune_angle_degrees * std::numbers::pi / 180.0, 0.05,
                            std::max(m.prune_span, o.prune_span) * diagonal, m.lobes,
-                           TipOptions{m.tip_reach * diagonal / m.sample_divisions, m.tip_thinness});
+                           TipOptions{m.tip_reach * diagonal / m.sample_divisions, m.tip_thinness,
+                                      m.tip_join == TipJoin::always});
     r.pruned = pruned.vertices_removed;
     tips_kept = pruned.tips_kept;
     if (o.progress && pruned.lobes_kept > 0)
@@ -82,6 +83,10 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
       o.progress(fmt::format("medial path: {} small pieces kept as thin protrusions (a ball reaching {} sample "
                              "spacings and {} radii beyond the large pieces')",
                              pruned.tips_kept, m.tip_reach, m.tip_thinness));
+    if (o.progress && pruned.tips_connected + pruned.tips_bridged > 0)
+      o.progress(fmt::format("medial path: thin protrusions joined to the body again: {} along their medial path ({} "
+                             "pruned vertices kept), {} by an edge between overlapping balls",
+                             pruned.tips_connected, pruned.connecting_vertices, pruned.tips_bridged));
   };
   prune(graph);
   // Thin walls sampled finer (thin_walls.hpp), the rest of the shape as it
@@ -581,7 +586,30 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // its topology is closer (the result is then the one before the tips).
   if (tips_kept > 0 && stage.meshed) {
     const long long with = topology_defects(input_topology, mesh_topology(*stage.meshed));
-    if (with > 0) {
+    // A piece kept apart that came back apart (CGAL's camel: the tail's
+    // neck, where two tube ends' spheres overlap, thinner than the
+    // measure's facet): the medial path again with the pieces joined to the
+    // body (TipJoin). Where that has defects still, it tries without the
+    // tips itself, so the better of the three is kept.
+    if (m.tip_join == TipJoin::where_apart && mesh_topology(*stage.meshed).components > input_topology.components) {
+      if (o.progress)
+        o.progress(fmt::format("medial path: {} components with the thin protrusions kept apart, {} in the input: "
+                               "the medial path again with them joined to the body",
+                               mesh_topology(*stage.meshed).components, input_topology.components));
+      ReconstructOptions joined = o;
+      joined.medial.tip_join = TipJoin::always;
+      MedialPathReport again_report;
+      Stage again = medial_stage(surface, joined, &again_report);
+      const long long after =
+          again.meshed ? topology_defects(input_topology, mesh_topology(*again.meshed)) : with;
+      if (o.progress)
+        o.progress(fmt::format("medial path: topology defects with the thin protrusions joined {} against {}: {}",
+                               after, with, after < with ? "kept" : "not kept"));
+      if (after < with) {
+        if (report != nullptr) *report = again_report;
+        return again;
+      }
+    } else if (with > 0) {
       if (o.progress)
         o.progress(fmt::format("medial path: {} topology defects with the thin protrusions kept: the medial path "
                                "again without them",

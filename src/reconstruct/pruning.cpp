@@ -5,7 +5,10 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <limits>
 #include <numeric>
+#include <queue>
+#include <utility>
 
 #include "union_find.hpp"
 
@@ -91,6 +94,90 @@ bool reaches_beyond(const MedialGraph& graph, const std::vector<std::size_t>& la
     if (other.radius - (other.centre - ball.centre).norm() > ball.radius - reach) return false;
   }
   return true;
+}
+
+/// TipOptions::connect: marks kept the vertices on the shortest way
+/// (Dijkstra over the Voronoi edges, each its centres' distance) from the
+/// `anchored` vertices (those of the large pieces and the lobes) to each
+/// tip piece (the `tipped` vertices, grouped by their union-find `root`),
+/// through vertices that are not anchored; the tip piece's vertex nearest
+/// that way ends it. Where the graph does not reach a tip piece (a tube
+/// thinner than the samples' spacing along it: the Delaunay cells between
+/// two rings of samples have their circumcentres outside, and the graph
+/// stops there), the piece is bridged by a new edge, without a dual facet
+/// ({-1, -1, -1}), between its ball and an anchored ball that overlap, the
+/// pair whose centres are closest: two overlapping inscribed balls hold the
+/// segment between their centres, so the edge stays inside the shape; both
+/// balls in the same closed part of the surface (a Voronoi ball may reach a
+/// little past a curved surface, into a close part beside it). A piece
+/// whose balls overlap none of the anchored ones stays apart.
+void connect_tips(MedialGraph& graph, const std::vector<std::int32_t>& root, const std::vector<bool>& anchored,
+                  const std::vector<bool>& tipped, std::vector<bool>& keep, PruningReport& report) {
+  const std::size_t n = graph.vertices.size();
+  std::vector<std::vector<std::int32_t>> neighbours(n);
+  for (const MedialEdge& e : graph.edges) {
+    neighbours[std::size_t(e.a)].push_back(e.b);
+    neighbours[std::size_t(e.b)].push_back(e.a);
+  }
+  const double infinity = std::numeric_limits<double>::infinity();
+  std::vector<double> distance(n, infinity);
+  std::vector<std::int32_t> previous(n, -1);
+  using Item = std::pair<double, std::int32_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  for (std::size_t v = 0; v < n; ++v)
+    if (anchored[v]) distance[v] = 0.0, queue.push({0.0, std::int32_t(v)});
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > distance[std::size_t(v)]) continue;
+    for (const std::int32_t w : neighbours[std::size_t(v)]) {
+      const double length = d + (graph.vertices[std::size_t(w)].centre - graph.vertices[std::size_t(v)].centre).norm();
+      if (length < distance[std::size_t(w)]) {
+        distance[std::size_t(w)] = length, previous[std::size_t(w)] = v;
+        queue.push({length, w});
+      }
+    }
+  }
+  // Each tip piece's vertex nearest the anchored pieces (the first in
+  // vertex order on a tie), then the way back from it.
+  std::map<std::int32_t, std::int32_t> nearest;
+  for (std::size_t v = 0; v < n; ++v) {
+    if (!tipped[v] || distance[v] == infinity) continue;
+    if (const auto [at, fresh] = nearest.emplace(root[v], std::int32_t(v));
+        !fresh && distance[v] < distance[std::size_t(at->second)])
+      at->second = std::int32_t(v);
+  }
+  for (const auto& [r, end] : nearest) {
+    ++report.tips_connected;
+    for (std::int32_t v = previous[std::size_t(end)]; v >= 0 && !anchored[std::size_t(v)];
+         v = previous[std::size_t(v)]) {
+      if (!keep[std::size_t(v)]) ++report.connecting_vertices;
+      keep[std::size_t(v)] = true;
+    }
+  }
+  // The pieces the graph does not reach: the closest overlapping pair of
+  // balls (the first in vertex order on a tie), bridged.
+  std::map<std::int32_t, std::pair<std::int32_t, std::int32_t>> bridge;
+  std::map<std::int32_t, double> closest;
+  for (std::size_t v = 0; v < n; ++v) {
+    if (!tipped[v] || nearest.count(root[v]) > 0) continue;
+    const MedialVertex& ball = graph.vertices[v];
+    const std::int32_t part = vertex_part(graph, v);
+    for (std::size_t u = 0; u < n; ++u) {
+      if (!anchored[u] || vertex_part(graph, u) != part) continue;
+      const MedialVertex& other = graph.vertices[u];
+      const double d = (other.centre - ball.centre).norm();
+      if (d >= ball.radius + other.radius) continue;
+      if (const auto at = closest.find(root[v]); at == closest.end() || d < at->second) {
+        closest[root[v]] = d;
+        bridge[root[v]] = {std::int32_t(u), std::int32_t(v)};
+      }
+    }
+  }
+  for (const auto& [r, pair] : bridge) {
+    ++report.tips_bridged;
+    graph.edges.push_back({pair.first, pair.second, {-1, -1, -1}});
+  }
 }
 
 }  // namespace
@@ -185,6 +272,14 @@ PruningReport prune_medial_graph(MedialGraph& graph, double threshold, double mi
   }
   for (const auto& [r, s] : size) {
     if (small(r)) ++(lobe[r] ? report.lobes_kept : tip[r] ? report.tips_kept : report.small_pieces_removed);
+  }
+  if (tips.connect && report.tips_kept > 0) {
+    std::vector<bool> anchored(n), tipped(n);
+    for (std::size_t v = 0; v < n; ++v) {
+      anchored[v] = root[v] >= 0 && (!small(root[v]) || lobe[root[v]]);
+      tipped[v] = root[v] >= 0 && small(root[v]) && tip[root[v]];
+    }
+    connect_tips(graph, root, anchored, tipped, keep, report);
   }
   compact(graph, keep);
   return report;

@@ -45,7 +45,9 @@ struct MedialVertex {
 };
 
 /// A Voronoi edge between two inner Voronoi vertices, dual to the Delaunay
-/// facet `facet` (three sample indices) the two tetrahedra share.
+/// facet `facet` (three sample indices) the two tetrahedra share; {-1, -1,
+/// -1} for an edge pruning added between two overlapping balls
+/// (pruning.hpp, TipOptions::connect), dual to no facet.
 struct MedialEdge {
   std::int32_t a = 0, b = 0;
   std::array<std::int32_t, 3> facet;

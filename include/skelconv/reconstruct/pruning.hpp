@@ -43,6 +43,13 @@ struct PruningReport {
   std::size_t lobes_kept = 0;
   /// Small pieces kept as thin protrusions (TipOptions).
   std::size_t tips_kept = 0;
+  /// Of them, those joined again to the large pieces along the graph
+  /// (TipOptions::connect), and the pruned vertices kept to join them;
+  /// those the graph does not reach, bridged by an edge between overlapping
+  /// balls.
+  std::size_t tips_connected = 0;
+  std::size_t connecting_vertices = 0;
+  std::size_t tips_bridged = 0;
 };
 
 /// When a small piece is a lobe of the shape and not noise. A ball on a
@@ -74,9 +81,24 @@ struct LobeOptions {
 /// own radius (0.8–1.4 r on the real shapes), and an isolated ball deeper
 /// than that would be a lobe; a protrusion longer than it is thick reaches
 /// several radii (the cow's teats 4 r). 0 for `reach`: no piece is kept.
+///
+/// With `connect`, each piece kept is joined again to the large pieces (or
+/// the lobes) along the shortest way through the graph's vertices the
+/// pruning removed (the sum of the Voronoi edges' lengths): the piece the
+/// angle cut off keeps its medial path to the body, and the medial mesh
+/// makes one tube of it. Kept apart, the two tube ends facing each other
+/// across the cut meet only where their end spheres overlap, a neck
+/// thinner than the part; on a part thinner than the measuring mesh's
+/// facet the mesher cannot resolve it (CGAL's camel: the tail, 0.4% of the
+/// diagonal thick, came back in two pieces, one with the body, at diagonal
+/// / 120, one piece at diagonal / 240). Where the graph does not reach the
+/// piece (a tube thinner than its samples' spacing along it breaks the
+/// inner Voronoi graph: the camel's tail), an edge bridges its ball and a
+/// large piece's ball that overlap; a piece overlapping none stays apart.
 struct TipOptions {
   double reach = 0.0;
   double thinness = 2.0;
+  bool connect = false;
 };
 
 /// θ of vertex `v` of `graph` (p± = the longest edge of its tetrahedron).
