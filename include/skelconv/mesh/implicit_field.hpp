@@ -19,12 +19,14 @@
 
 namespace skelconv {
 
-/// The relative accuracy of skeleton_field's coarse field: its error moves
-/// a grid vertex's start by ~1e-6 of the distance to the surface the
-/// grid's linear interpolation leaves (~1% of a voxel), so Newton takes as
-/// many steps from it, and the grid's signs it cannot decide are rare
-/// (|iso − f| within a few 1e-6 of f). Tighter costs longer rules, looser
-/// moves the starts (docs/mesh.md, "Coarse samples", has the measurements).
+/// The relative accuracy of skeleton_field's coarse field: its error (at
+/// most 1e-6 of f) moves a grid vertex's start by a few 1e-6 of a voxel,
+/// far less than the ~1% of a voxel the grid's linear interpolation leaves
+/// it from the surface, so Newton takes as many steps from it; and the
+/// grid nodes whose sign it cannot decide (|iso − f| within a few 1e-6 of
+/// f) are rare. Tighter costs longer rules; looser moves the starts and
+/// leaves more nodes undecided (docs/mesh.md, "Coarse samples", has the
+/// measurements).
 inline constexpr double skeleton_coarse_tolerance = 1e-6;
 
 /// The mesher calls value, value_and_gradient, the _near ones and the
