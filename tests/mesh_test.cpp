@@ -218,6 +218,10 @@ ImplicitField scaled(const Skeleton& skeleton, double alpha) {
     s.gradient /= alpha;
     return s;
   };
+  // skeleton_field's other evaluations are of the unscaled field.
+  field.value_near = {};
+  field.value_and_gradient_near = {};
+  field.coarse = nullptr;
   for (Vec3& p : field.skeleton_points) p *= alpha;
   return field;
 }

@@ -59,11 +59,8 @@ bool infinite_on_skeleton(const Skeleton& skeleton) {
   return false;
 }
 
-}  // namespace
-
-ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element, double tolerance) {
-  Skeleton::checked_tolerance(tolerance);
-  ImplicitField field;
+/// skeleton_field's evaluations of `skeleton` at `tolerance`, into `field`.
+void set_evaluations(ImplicitField& field, const Skeleton& skeleton, double tolerance) {
   field.value_and_gradient = [&skeleton, tolerance](const Vec3& p) {
     return skeleton.value_and_gradient(p, tolerance);
   };
@@ -82,6 +79,20 @@ ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element, d
         return skeleton.value(p, rules);
       };
     };
+  }
+}
+
+}  // namespace
+
+ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element, double tolerance) {
+  Skeleton::checked_tolerance(tolerance);
+  ImplicitField field;
+  set_evaluations(field, skeleton, tolerance);
+  if (tolerance > 0.0 && tolerance < skeleton_coarse_tolerance) {
+    auto coarse = std::make_shared<ImplicitField>();
+    set_evaluations(*coarse, skeleton, skeleton_coarse_tolerance);
+    field.coarse = std::move(coarse);
+    field.coarse_tolerance = skeleton_coarse_tolerance;
   }
   field.skeleton_points = skeleton.skeleton_points(points_per_element);
   field.far_field = 0.0;  // every kernel family (docs/mathematics.md §1, §4) decays to 0 at infinity

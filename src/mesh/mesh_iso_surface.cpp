@@ -35,22 +35,27 @@ class FieldMeter {
  public:
   FieldMeter(const ImplicitField& field, const MeshOptions& options) : field_(field), options_(options) {}
 
-  /// `field_` with every call metered; valid while *this lives.
-  ImplicitField metered() {
-    ImplicitField m = field_;
-    m.value = [this](const Vec3& p) { return measure([&] { return field_.value(p); }); };
-    m.value_and_gradient = [this](const Vec3& p) { return measure([&] { return field_.value_and_gradient(p); }); };
-    if (field_.reaches)
-      m.reaches = [this](const Vec3& p, double level) { return measure([&] { return field_.reaches(p, level); }); };
-    m.value_and_gradient_near = metered_near(field_.value_and_gradient_near);
-    m.value_near = metered_near(field_.value_near);
-    return m;
-  }
+  /// `field_` with every call metered, its coarse field's too; valid while
+  /// *this lives.
+  ImplicitField metered() { return metered(field_); }
   void report_progress(bool on) { reporting_ = on && bool(options_.progress); }
   std::size_t evaluations() const { return evaluations_.load(); }
   double seconds() const { return clock_.seconds(ticks_.load()); }
 
  private:
+  /// `field` (field_ or a field it holds) with every call metered.
+  ImplicitField metered(const ImplicitField& field) {
+    ImplicitField m = field;
+    m.value = [this, &field](const Vec3& p) { return measure([&] { return field.value(p); }); };
+    m.value_and_gradient = [this, &field](const Vec3& p) { return measure([&] { return field.value_and_gradient(p); }); };
+    if (field.reaches)
+      m.reaches = [this, &field](const Vec3& p, double level) { return measure([&] { return field.reaches(p, level); }); };
+    m.value_and_gradient_near = metered_near(field.value_and_gradient_near);
+    m.value_near = metered_near(field.value_near);
+    if (field.coarse) m.coarse = std::make_shared<const ImplicitField>(metered(*field.coarse));
+    return m;
+  }
+
   /// A field's `..._near` metered: the shared work (choosing for the ball)
   /// timed as the field's, each point's evaluation counted. Unset if unset.
   template <class Sample>
@@ -284,10 +289,47 @@ std::function<double(const Vec3&)> grid_level(const ImplicitField& field, double
   };
 }
 
-/// grid_level for points near `centre` (GridSurfaceRequest::level_near),
-/// through ImplicitField::value_near; none where the field has no value_near.
+/// How far from the iso, in units of the coarse field's error bound, a
+/// coarse value f̃ must lie for the grid to take its sign: |f̃ − f| ≤ ε |f|
+/// ≤ 2ε |f̃| (ε ≤ 1/2), so |iso − f̃| > 4ε |f̃| leaves |iso − f| > 2ε |f̃|
+/// with the same sign, far more than the field's own error (a tolerance
+/// below ε, plus rounding), whose value then has that sign too.
+constexpr double coarse_sign_margin = 4.0;
+
+/// grid_level from the coarse value `coarse` (ImplicitField::coarse) where
+/// it decides the sign of iso − f (coarse_sign_margin), else from the field:
+/// every node gets the sign the field's own value gives it, hence the same
+/// cells, faces and triangles; the values, which only place the grid's
+/// vertices before the projection moves them onto the surface, differ by
+/// about the coarse field's error.
+std::function<double(const Vec3&)> coarse_grid_level(const ImplicitField& field, double iso, double voxel,
+                                                     std::function<double(const Vec3&)> coarse) {
+  return [iso, margin = coarse_sign_margin * field.coarse_tolerance, coarse = std::move(coarse),
+          fine = grid_level(field, iso, voxel)](const Vec3& p) {
+    const double rough = coarse(p);
+    if (std::isfinite(rough) && std::abs(iso - rough) > margin * std::abs(rough)) return iso - rough;
+    return fine(p);
+  };
+}
+
+/// The grid method's level: coarse_grid_level where the field has a coarse
+/// field, else grid_level.
+std::function<double(const Vec3&)> grid_level_of(const ImplicitField& field, double iso, double voxel) {
+  if (field.coarse) return coarse_grid_level(field, iso, voxel, field.coarse->value);
+  return grid_level(field, iso, voxel);
+}
+
+/// grid_level_of for points near `centre` (GridSurfaceRequest::level_near),
+/// through ImplicitField::value_near (the coarse field's where there is
+/// one; the few values it leaves to the field are evaluated alone); none
+/// where the field has no value_near.
 std::function<std::function<double(const Vec3&)>(const Vec3&, double)> grid_level_near(const ImplicitField& field,
                                                                                       double iso, double voxel) {
+  if (field.coarse && field.coarse->value_near) {
+    return [&field, iso, voxel](const Vec3& centre, double radius) {
+      return coarse_grid_level(field, iso, voxel, field.coarse->value_near(centre, radius));
+    };
+  }
   if (!field.value_near) return {};
   return [&field, iso, voxel](const Vec3& centre, double radius) {
     return grid_level(field, iso, voxel, field.value_near(centre, radius));
@@ -452,7 +494,7 @@ TriangleMesh mesh_iso_surface(const ImplicitField& field, const MeshOptions& opt
   meter.report_progress(true);
   const auto level = [&metered, iso](const Vec3& p) { return iso - metered.value(p); };
   const auto grid_mesh = [&](const std::vector<Vec3>& from) {
-    return detail::grid_surface_mesh({.level = grid_level(metered, iso, run.size),
+    return detail::grid_surface_mesh({.level = grid_level_of(metered, iso, run.size),
                                       .level_near = grid_level_near(metered, iso, run.size),
                                       .box = run.box,
                                       .voxel = run.size,

@@ -28,17 +28,24 @@ bool usable(const FieldSample& s) { return std::isfinite(s.value) && s.gradient.
 /// evaluated as usual.
 constexpr double shared_fraction = 1.0 / 16;
 
+/// Newton's step from a sample: −(f − iso) ∇f / |∇f|², at most max_step long.
+Vec3 newton_step(const FieldSample& s, double iso, const ProjectionOptions& options) {
+  Vec3 step = -(s.value - iso) / s.gradient.squaredNorm() * s.gradient;
+  if (step.norm() > options.max_step) step *= options.max_step / step.norm();
+  return step;
+}
+
 /// Newton from p: the final sample if it is within the tolerance (p moved
 /// there), else nothing (p where Newton stopped). `evaluate` is the field's
-/// f and ∇f near the start.
+/// f and ∇f near the start; `steps_taken` the steps already taken towards
+/// p (they count towards options.max_iterations).
 template <class Evaluate>
 std::optional<FieldSample> newton(Vec3& p, FieldSample& s, const Evaluate& evaluate, double iso,
-                                  const ProjectionOptions& options) {
-  for (int iteration = 0; usable(s); ++iteration) {
+                                  const ProjectionOptions& options, int steps_taken) {
+  for (int iteration = steps_taken; usable(s); ++iteration) {
     if (first_order_distance(s, iso) <= options.tolerance) return s;
     if (iteration == options.max_iterations) break;
-    Vec3 step = -(s.value - iso) / s.gradient.squaredNorm() * s.gradient;
-    if (step.norm() > options.max_step) step *= options.max_step / step.norm();
+    Vec3 step = newton_step(s, iso, options);
     // Halve the step until |f − iso| decreases (at most 40 times: 1e-12 of it).
     for (int halving = 0; halving < 40; ++halving, step /= 2) {
       const FieldSample next = evaluate(p + step);
@@ -105,15 +112,53 @@ std::optional<FieldSample> bisect_to_surface(Vec3& p, const FieldSample& at_p, c
   return std::nullopt;
 }
 
+/// How far from the surface, in units of the coarse field's error bound
+/// ε |f̃| / |∇f̃|, a vertex's coarse sample must put it for its first Newton
+/// step to be taken from that sample: the step then moves it towards the
+/// surface by nearly its whole distance (the coarse value's error is at most
+/// a quarter of it).
+constexpr double coarse_step_margin = 4.0;
+
+/// The first Newton step from p taken on the coarse field (ImplicitField::
+/// coarse): its error (~1e-6 of f) moves the step's end by far less than
+/// the ~1% of a voxel a grid vertex starts from the surface, so Newton goes
+/// on from there in as many steps, each evaluation after it on the field.
+/// The step is kept, p moved and its end's sample returned, only if |f − iso|
+/// there is below the start's coarse |f̃ − iso| (the halving test's
+/// condition); else nothing (p unchanged), and Newton starts from p on the
+/// field as it would without a coarse field.
+template <class Evaluate>
+std::optional<FieldSample> coarse_first_step(Vec3& p, const ImplicitField& field, const Evaluate& evaluate, double iso,
+                                             const ProjectionOptions& options) {
+  const FieldSample rough = field.coarse->value_and_gradient(p);
+  if (!usable(rough)) return std::nullopt;
+  // A start the coarse field puts within the tolerance may need no step at
+  // all: the field decides.
+  const double distance = first_order_distance(rough, iso);
+  if (!(distance > options.tolerance &&
+        distance > coarse_step_margin * field.coarse_tolerance * std::abs(rough.value) / rough.gradient.norm())) {
+    return std::nullopt;
+  }
+  const Vec3 next = p + newton_step(rough, iso, options);
+  const FieldSample at_next = evaluate(next);
+  if (!usable(at_next) || !(std::abs(at_next.value - iso) < std::abs(rough.value - iso))) return std::nullopt;
+  p = next;
+  return at_next;
+}
+
 /// p moved onto the surface; its final sample. Throws on failure.
 FieldSample project_point(Vec3& p, const ImplicitField& field, double iso, const ProjectionOptions& options) {
   const Vec3 start = p;
   const std::function<FieldSample(const Vec3&)> near =
       field.value_and_gradient_near ? field.value_and_gradient_near(start, shared_fraction * options.max_step)
                                     : field.value_and_gradient;
-  const FieldSample at_start = near(p);
-  FieldSample s = at_start;
-  if (const auto done = newton(p, s, near, iso, options)) return *done;
+  std::optional<FieldSample> first;
+  if (field.coarse) first = coarse_first_step(p, field, near, iso, options);
+  const std::optional<FieldSample> on_field_at_start = first ? std::nullopt : std::optional(near(p));
+  FieldSample s = first ? *first : *on_field_at_start;
+  if (const auto done = newton(p, s, near, iso, options, first ? 1 : 0)) return *done;
+  // The bisection's side is the field's at the start, not the coarse one's.
+  const FieldSample at_start = on_field_at_start ? *on_field_at_start : near(start);
   // Bisection from where Newton started: its last point may have wandered.
   Vec3 q = start;
   if (const auto done = bisect_to_surface(q, at_start, field, iso, options)) {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -17,6 +18,16 @@
 #include "skelconv/skeleton/skeleton.hpp"
 
 namespace skelconv {
+
+/// The relative accuracy of skeleton_field's coarse field: its error (at
+/// most 1e-6 of f) moves a grid vertex's start by a few 1e-6 of a voxel,
+/// far less than the ~1% of a voxel the grid's linear interpolation leaves
+/// it from the surface, so Newton takes as many steps from it; and the
+/// grid nodes whose sign it cannot decide (|iso − f| within a few 1e-6 of
+/// f) are rare. Tighter costs longer rules; looser moves the starts and
+/// leaves more nodes undecided (docs/mesh.md, "Coarse samples", has the
+/// measurements).
+inline constexpr double skeleton_coarse_tolerance = 1e-6;
 
 /// The mesher calls value, value_and_gradient, the _near ones and the
 /// functions they return from several threads at once (the seeds' rays,
@@ -57,6 +68,15 @@ struct ImplicitField {
   /// mesher takes as "no claim". The grid method samples only the blocks
   /// whose enclosure contains the iso (docs/mesh.md, "The grid method").
   std::function<std::pair<double, double>(const Eigen::AlignedBox3d&)> enclosure;
+  /// When set: the same field to a coarser relative accuracy, for less
+  /// work: |f̃ − f| ≤ coarse_tolerance · |f| (and ∇f as the tolerance mode
+  /// bounds it, docs/field.md, "Tolerance"). The mesher reads it where that
+  /// accuracy is enough: the grid's samples, whose sign it takes from this
+  /// field only where |iso − f̃| leaves no doubt about it, and the first
+  /// Newton step of each vertex, whose end is checked on this field
+  /// (docs/mesh.md, "Coarse samples"). Its own `coarse` is unset.
+  std::shared_ptr<const ImplicitField> coarse;
+  double coarse_tolerance = 0.0;
   /// True when f is infinite on part of the skeleton (a primitive of a
   /// kernel singular at distance 0, such as the inverse family, or a SCALIS
   /// primitive with a zero radius). Only then may an evaluation on or next to
@@ -73,7 +93,10 @@ struct ImplicitField {
 /// node may add a constant where its children are 0, Ferley's r_k > c).
 /// enclosure is interval::enclose (interval/enclosure.hpp). f and ∇f are
 /// Skeleton's tolerance mode at `tolerance` (0: exact; docs/field.md,
-/// "Tolerance"), the default for meshes.
+/// "Tolerance"), the default for meshes. With 0 < tolerance <
+/// skeleton_coarse_tolerance, `coarse` is the tolerance mode at
+/// skeleton_coarse_tolerance (on a skeleton the mode does not cover, the
+/// exact field: the same values).
 ImplicitField skeleton_field(const Skeleton& skeleton, int points_per_element = 4,
                              double tolerance = Skeleton::default_tolerance);
 
