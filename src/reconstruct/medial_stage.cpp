@@ -421,7 +421,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // cavities MedialOptions::guard_filled_cavities names as the fill will
   // leave them: by default the bubbles of a crease's air, which the fill
   // takes away. Counted as losses, a bubble stops the fit where its rounds
-  // seal a crease's mouth (CGAL's man: round 5 of 27 sealed one under the
+  // seal a crease's mouth (CGAL's man: round 5 of 30 sealed one under the
   // chin, and the fit stopped after round 4 at 3.64 / 0.482). A hollow in
   // the input's solid stays a loss: the fill's sphere there is capped at
   // depth / σ and may not close it (CGAL's Chinese dragon, its hollows

@@ -195,7 +195,7 @@ struct MedialOptions {
   /// Which of the fitted rounds' cavities the fit's topology guard counts
   /// as filled. `air` (the default): a bubble of a crease's air that a round
   /// seals is no loss, the fill takes it away after the fit (CGAL's man
-  /// `--repair`: 3.64 / 0.482 → 2.94 / 0.252, one component, the fit's 27
+  /// `--repair`: 3.64 / 0.482 → 2.94 / 0.252, one component, the fit's 30
   /// rounds run where counting the bubbles stopped it after round 4), while
   /// a hollow in the input's solid stays a defect: counted as filled
   /// (`all`, `skelconv skeletonize --medial-guard-counts-filled-cavities`),
