@@ -5,6 +5,7 @@
 // and one inside them is closed. Then the whole path on a cube (the budget)
 // and a plate, where the fit may only lower its RMS distance.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include <limits>
 #include <numbers>
 #include <set>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -1249,6 +1251,78 @@ TEST(FillCavities, AHollowSurfaceEnclosesEmptySpaceASolidOneNot) {
   ASSERT_EQ(mesh_topology(ball).components, 1u);
   EXPECT_FALSE(skelconv::detail::encloses_empty_space(ball));
   EXPECT_TRUE(skelconv::detail::encloses_empty_space(meshed_in_box(octahedron_shell(), 0.04)));
+}
+
+// An octahedron's surface about `centre` with its vertices `r` out along
+// the axes, its triangles facing out (a solid's wall) or, `inward`, in (a
+// cavity's wall): 6 vertices, 12 edges, 8 triangles, χ 2.
+void add_octahedron(TriangleMesh& mesh, const Vec3& centre, double r, bool inward) {
+  const std::int32_t first = std::int32_t(mesh.vertices.size());
+  for (int axis = 0; axis < 3; ++axis)
+    for (const double side : {1.0, -1.0}) {
+      Vec3 v = centre;
+      v[axis] += side * r;
+      mesh.vertices.push_back(v);
+    }
+  // Vertices +x 0, −x 1, +y 2, −y 3, +z 4, −z 5; (+x, +y, +z) turns
+  // counter-clockwise seen from outside: (−1, 1, 0) × (−1, 0, 1) = (1, 1, 1).
+  const std::array<std::array<std::int32_t, 3>, 8> out{
+      {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
+  for (const auto& t : out)
+    mesh.triangles.push_back(inward ? std::array<std::int32_t, 3>{first + t[0], first + t[2], first + t[1]}
+                                    : std::array<std::int32_t, 3>{first + t[0], first + t[1], first + t[2]});
+}
+
+// The guard counts a bubble of a crease's air as the fill leaves it and a
+// hollow in the input's solid as a defect. Two shells, each an outer wall
+// (an octahedron of radius 1 facing out) about an inner one (radius 0.3,
+// facing in), at x = −3 and x = 3: 4 components, χ 8 (four octahedra,
+// 6 − 12 + 8 = 2 each). The input is air at the left shell's centre (its
+// signed distance |p − (−3, 0, 0)| − 0.5 there, −0.5) and solid at the
+// right's (1.5 − |p − (3, 0, 0)|, 1.5), and encloses no empty space: the
+// left inner wall is a bubble, the right a hollow, each a component and a
+// χ of 2 that the fill takes away. Counted as filled: none 4 components,
+// χ 8; the bubble alone 3, χ 6; both 2, χ 4. Where the input encloses
+// empty space, the bubble may be its own and is not filled: the bubbles
+// alone leave 4, χ 8, and both 3, χ 6.
+TEST(FillCavities, TheGuardCountsABubbleOfAirAsFilledAndAHollowInTheSolidAsADefect) {
+  TriangleMesh shells;
+  add_octahedron(shells, Vec3(-3.0, 0.0, 0.0), 1.0, false);
+  add_octahedron(shells, Vec3(-3.0, 0.0, 0.0), 0.3, true);
+  add_octahedron(shells, Vec3(3.0, 0.0, 0.0), 1.0, false);
+  add_octahedron(shells, Vec3(3.0, 0.0, 0.0), 0.3, true);
+  ASSERT_EQ(mesh_topology(shells).components, 4u);
+  ASSERT_EQ(mesh_topology(shells).euler_characteristic, 8);
+  const auto depth = [](const Vec3& p) {
+    return p.x() < 0.0 ? (p - Vec3(-3.0, 0.0, 0.0)).norm() - 0.5 : 1.5 - (p - Vec3(3.0, 0.0, 0.0)).norm();
+  };
+  ReconstructOptions o;
+  const double sigma = o.medial.kernel_sigma, margin = 0.04;
+  using reconstruct::GuardFilledCavities;
+  using skelconv::detail::topology_after_fill;
+
+  const std::vector<skelconv::detail::Cavity> found =
+      skelconv::detail::spurious_cavities(shells, depth, false, margin, sigma);
+  ASSERT_EQ(found.size(), 2u);
+  for (const auto& cavity : found) {
+    EXPECT_EQ(cavity.euler_characteristic, 2);
+    EXPECT_NEAR(std::abs(cavity.ball.x()), 3.0, 1e-12);
+    EXPECT_EQ(cavity.air, cavity.ball.x() < 0.0);
+  }
+  const auto counted = [&](const std::vector<skelconv::detail::Cavity>& cavities, GuardFilledCavities which) {
+    const MeshTopology t = topology_after_fill(shells, cavities, which);
+    return std::pair<std::size_t, long long>(t.components, t.euler_characteristic);
+  };
+  EXPECT_EQ(counted(found, GuardFilledCavities::none), (std::pair<std::size_t, long long>(4, 8)));
+  EXPECT_EQ(counted(found, GuardFilledCavities::air), (std::pair<std::size_t, long long>(3, 6)));
+  EXPECT_EQ(counted(found, GuardFilledCavities::all), (std::pair<std::size_t, long long>(2, 4)));
+
+  const std::vector<skelconv::detail::Cavity> hollow_input =
+      skelconv::detail::spurious_cavities(shells, depth, true, margin, sigma);
+  ASSERT_EQ(hollow_input.size(), 1u);
+  EXPECT_FALSE(hollow_input[0].air);
+  EXPECT_EQ(counted(hollow_input, GuardFilledCavities::air), (std::pair<std::size_t, long long>(4, 8)));
+  EXPECT_EQ(counted(hollow_input, GuardFilledCavities::all), (std::pair<std::size_t, long long>(3, 6)));
 }
 
 // Room within the budget for a cavity's sphere: a chain A–B–C–D–E along x

@@ -229,10 +229,19 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                     "The medial fit keeps one point per facing within each cell of its grid, not one per cell: a "
                     "sharp edge's two faces and a thin wall's two faces are each seen (better on most CAD parts, "
                     "worse on others: docs/reconstruction_medial.md, \"What limits it\")");
-  command->add_flag("--medial-guard-counts-filled-cavities", options.medial.guard_counts_filled_cavities,
-                    "The medial fit's topology guard counts each fitted round as the cavity fill after the fit "
-                    "leaves it, so that bubbles the rounds seal in creases do not stop the fit (better on CGAL's "
-                    "man, worse on its Chinese dragon: docs/reconstruction_medial.md, \"The topology\")");
+  auto* all_filled = command->add_flag_callback(
+      "--medial-guard-counts-filled-cavities",
+      [&options] { options.medial.guard_filled_cavities = reconstruct::GuardFilledCavities::all; },
+      "The medial fit's topology guard counts each fitted round as the cavity fill after the fit leaves it, hollows "
+      "inside the input too (by default only bubbles of a crease's air; worse on CGAL's Chinese dragon: "
+      "docs/reconstruction_medial.md, \"The guard counting cavities as filled\")");
+  command
+      ->add_flag_callback(
+          "--medial-guard-counts-every-cavity",
+          [&options] { options.medial.guard_filled_cavities = reconstruct::GuardFilledCavities::none; },
+          "The medial fit's topology guard counts every cavity of a fitted round as a defect, bubbles of a "
+          "crease's air too (docs/reconstruction_medial.md, \"The guard counting cavities as filled\")")
+      ->excludes(all_filled);
   command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees of the curve path (default 90)");
   command->add_option("--prune-span", options.prune_span,
                       "Also prune Voronoi vertices whose contact samples span less than this × the diagonal "

@@ -79,6 +79,18 @@ std::vector<Component> components_of(const TriangleMesh& meshed) {
 
 }  // namespace
 
+MeshTopology topology_after_fill(const TriangleMesh& meshed, const std::vector<Cavity>& cavities,
+                                 reconstruct::GuardFilledCavities counted) {
+  MeshTopology t = mesh_topology(meshed);
+  if (counted == reconstruct::GuardFilledCavities::none) return t;
+  for (const Cavity& c : cavities) {
+    if (counted == reconstruct::GuardFilledCavities::air && !c.air) continue;
+    --t.components;
+    t.euler_characteristic -= c.euler_characteristic;
+  }
+  return t;
+}
+
 bool encloses_empty_space(const TriangleMesh& surface) {
   const std::vector<Component> components = components_of(surface);
   return components.size() > 1 &&
@@ -119,7 +131,7 @@ std::vector<Cavity> spurious_cavities(const TriangleMesh& meshed, const std::fun
       largest = to_outer_surface(centre);
     if (!(largest > 0.0)) continue;
     cavities.push_back({{centre.x(), centre.y(), centre.z(), std::min(radius + margin, largest)},
-                        c.euler_characteristic()});
+                        c.euler_characteristic(), !(inside > 0.0)});
   }
   return cavities;
 }

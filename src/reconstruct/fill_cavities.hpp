@@ -8,8 +8,10 @@
 #include <functional>
 #include <vector>
 
+#include "skelconv/mesh/mesh_topology.hpp"
 #include "skelconv/mesh/triangle_mesh.hpp"
 #include "skelconv/reconstruct/medial_mesh.hpp"
+#include "skelconv/reconstruct/reconstruct.hpp"
 
 namespace skelconv::detail {
 
@@ -20,6 +22,9 @@ namespace skelconv::detail {
 struct Cavity {
   reconstruct::Vec4 ball;
   long long euler_characteristic = 0;
+  /// Whether the wall's centre lies outside the input: a bubble of a
+  /// crease's air, not a hollow in the input's solid.
+  bool air = false;
 };
 
 /// A closed component of `meshed` (the surface f = iso of a medial mesh,
@@ -51,6 +56,13 @@ struct Cavity {
 /// rest, mostly: the caller meshes again to see.
 std::vector<Cavity> spurious_cavities(const TriangleMesh& meshed, const std::function<double(const Vec3&)>& depth,
                                       bool input_hollow, double margin, double sigma);
+
+/// The topology of `meshed` as the fill will leave it, as the fit's
+/// topology guard counts it: each of `cavities` (spurious_cavities of
+/// `meshed`) that `counted` names, every one (`all`), the bubbles of air
+/// alone (`air`) or none, taken off, one component and its wall's χ each.
+MeshTopology topology_after_fill(const TriangleMesh& meshed, const std::vector<Cavity>& cavities,
+                                 reconstruct::GuardFilledCavities counted);
 
 /// Whether a closed surface encloses empty space: a component of it bounds
 /// a negative volume (faces into what it bounds), as a hollow ball's inner

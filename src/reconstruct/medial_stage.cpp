@@ -357,14 +357,6 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   const MeshTopology input_topology = mesh_topology(surface);
   const bool input_hollow = detail::encloses_empty_space(surface);
   const auto depth = [&shape](const Vec3& c) { return shape.signed_distance(c); };
-  const auto after_fill = [&](const TriangleMesh& meshed) {
-    MeshTopology t = mesh_topology(meshed);
-    for (const detail::Cavity& c : detail::spurious_cavities(meshed, depth, input_hollow, facet, m.kernel_sigma)) {
-      --t.components;
-      t.euler_characteristic -= c.euler_characteristic;
-    }
-    return t;
-  };
   // The guard needs the topology alone: it meshes without projecting the
   // vertices (mesh_stage_unprojected, the same triangles), about a sixth
   // of a meshing's work less. Each surface it meshes is kept with its
@@ -380,11 +372,12 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // taken again, moved to the back as a new one would be, and nothing is
   // meshed (the mesh, and so its topology, is a function of the skeleton).
   std::vector<std::pair<MedialMesh, TriangleMesh>> meshed;
-  // `as_filled`: a cavity of the surface that fill_cavities.hpp fills
-  // after the fit (a hollow inside the input's solid, or a bubble of a
-  // crease's air where the input encloses none) counted as the fill
-  // leaves it, one component and the cavity's χ fewer each (after_fill).
-  const auto defects = [&](const MedialMesh& medial, bool as_filled) {
+  // `as_filled`: the cavities of the surface that fill_cavities.hpp fills
+  // after the fit (hollows inside the input's solid, bubbles of a crease's
+  // air where the input encloses none), all, the bubbles alone or none,
+  // counted as the fill leaves them, one component and the cavity's χ
+  // fewer each (topology_after_fill).
+  const auto defects = [&](const MedialMesh& medial, GuardFilledCavities as_filled) {
     const auto known =
         std::find_if(meshed.begin(), meshed.end(), [&medial](const auto& entry) { return same(entry.first, medial); });
     if (known != meshed.end()) {
@@ -396,9 +389,17 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
       meshed.emplace_back(medial, mesh_stage_unprojected(surface, s, o));
     }
     return topology_defects(input_topology,
-                            as_filled ? after_fill(meshed.back().second) : mesh_topology(meshed.back().second));
+                            detail::topology_after_fill(
+                                meshed.back().second,
+                                as_filled == GuardFilledCavities::none
+                                    ? std::vector<detail::Cavity>{}
+                                    : detail::spurious_cavities(meshed.back().second, depth, input_hollow, facet,
+                                                                m.kernel_sigma),
+                                as_filled));
   };
-  const TopologyError topology_error = [&](const MedialMesh& medial) { return defects(medial, false); };
+  const TopologyError topology_error = [&](const MedialMesh& medial) {
+    return defects(medial, GuardFilledCavities::none);
+  };
   // The guard meshes the skeleton as the measure does, so it is off where
   // the measure would refuse that work (--measure-budget): the fit never
   // changes the primitive count, so one estimate holds for every round.
@@ -420,25 +421,29 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   fit.min_radius = m.min_radius_facets * diagonal / o.measure_divisions;
   fit.triangle_radius = m.triangle_radius;
   // The fit's guard (fit_medial_mesh) bounds each round's topology error
-  // by the unfitted spheres'. With MedialOptions::guard_counts_filled_cavities
-  // (off by default) the unfitted surface is counted as it is (what the
-  // result would be without the fit), each fitted one as the
-  // fill will leave it: the fit's own cavities are no loss, the fill takes
-  // them away. Counted as losses, a bubble stops the fit where its rounds
-  // seal a crease's mouth (CGAL's man: round 5 of 27 sealed one under the
-  // chin, the fit stopped after round 4 at 3.61 / 0.469 and kept its
-  // bubble); the unfitted surface counted as filled too bounds the rounds
-  // by a tunnel of the unfitted spheres that the input's sub-facet tunnels
-  // make look like progress (the man's first round closed it: the fit
-  // kept round 0).
-  bool as_filled = true;
+  // by the unfitted spheres'. The unfitted surface is counted as it is
+  // (what the result would be without the fit), each fitted one with the
+  // cavities MedialOptions::guard_filled_cavities names as the fill will
+  // leave them: by default the bubbles of a crease's air, which the fill
+  // takes away. Counted as losses, a bubble stops the fit where its rounds
+  // seal a crease's mouth (CGAL's man: round 5 of 30 sealed one under the
+  // chin, and the fit stopped after round 4 at 3.64 / 0.482). A hollow in
+  // the input's solid stays a loss: the fill's sphere there is capped at
+  // depth / σ and may not close it (CGAL's Chinese dragon, its hollows
+  // counted as filled: χ 2 → −2). The unfitted surface counted as filled
+  // too bounds the rounds by a tunnel of the unfitted spheres that the
+  // input's sub-facet tunnels make look like progress (the man's first
+  // round closed it: the fit kept round 0).
+  GuardFilledCavities as_filled = m.guard_filled_cavities;
   const auto fitted = [&](const MedialMesh& start, MedialFitReport* fit_report) {
     Stage s;
     s.name = "medial";
     const std::vector<Vec4> unfitted = fit_start(start, fit, clearance).spheres;
     TopologyError guard;
     if (too_much.empty())
-      guard = [&](const MedialMesh& medial) { return defects(medial, as_filled && medial.spheres != unfitted); };
+      guard = [&](const MedialMesh& medial) {
+        return defects(medial, medial.spheres != unfitted ? as_filled : GuardFilledCavities::none);
+      };
     if (!start.spheres.empty())
       s.medial = fit_medial_mesh(start, points, inside, field_of, fit, fit_report, o.progress, guard, clearance,
                                  point_parts);
@@ -453,9 +458,8 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // spheres', the cavity the guard let through was no loss the fill could
   // take away (CGAL's femur: a hollow the capped sphere did not close, 2
   // components for 1), and both run again with every cavity counted.
-  for (const bool counted_as_filled : {true, false}) {
-    if (counted_as_filled && !m.guard_counts_filled_cavities) continue;
-    as_filled = counted_as_filled;
+  for (const GuardFilledCavities counted : {m.guard_filled_cavities, GuardFilledCavities::none}) {
+    as_filled = counted;
     {
       Stage first = fitted(mesh, &r.fit);
       stage.medial = std::move(first.medial);
@@ -524,10 +528,10 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
         std::vector<detail::Cavity> balls =
             detail::spurious_cavities(*s.meshed, depth, input_hollow, facet, m.kernel_sigma);
         if (balls.size() > room) balls.resize(room);
-        for (const auto& [ball, euler] : balls) {
+        for (const detail::Cavity& cavity : balls) {
           s.medial.isolated.push_back(std::int32_t(s.medial.spheres.size()));
-          s.medial.spheres.push_back(ball);
-          if (part_total > 1) s.medial.parts.push_back(part_of(ball.head<3>()));
+          s.medial.spheres.push_back(cavity.ball);
+          if (part_total > 1) s.medial.parts.push_back(part_of(cavity.ball.head<3>()));
         }
         if (!balls.empty()) {
           topology_error(s.medial);
@@ -565,7 +569,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
         }
       }
     }
-    if (!as_filled || !stage.meshed) break;
+    if (as_filled == GuardFilledCavities::none || !stage.meshed) break;
     if (detail::spurious_cavities(*stage.meshed, depth, input_hollow, facet, m.kernel_sigma).empty()) break;
     Stage unfitted;
     unfitted.name = "medial";

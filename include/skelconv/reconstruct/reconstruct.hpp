@@ -26,6 +26,16 @@ namespace skelconv::reconstruct {
 /// segments: medial_mesh.hpp), or both, keeping the one that fits better.
 enum class SkeletonMethod { curve, medial, automatic };
 
+/// Which cavities of the fit's rounds the medial fit's topology guard counts
+/// as the cavity fill after the fit will leave them (no defect), the
+/// unfitted spheres' surface always as it is (docs/reconstruction_medial.md,
+/// "The guard counting cavities as filled").
+enum class GuardFilledCavities {
+  none,  ///< every cavity a defect
+  air,   ///< the bubbles of a crease's air (centre outside the input) filled, hollows in its solid defects
+  all,   ///< every cavity the fill fills, hollows in the input's solid too
+};
+
 /// The medial-mesh path (docs/reconstruction_medial.md).
 /// When the medial path joins each thin protrusion it keeps (pruning.hpp,
 /// TipOptions) to the body again, along its pruned medial path or by an
@@ -202,15 +212,18 @@ struct MedialOptions {
   /// --medial-geometric-triangle-radius` takes the geometric mean
   /// everywhere, `--medial-arithmetic-triangle-radius` the arithmetic.
   TriangleRadiusRule triangle_radius;
-  /// The fit's topology guard counts each fitted round's surface as the
-  /// cavity fill after the fit will leave it (its cavities no defect), the
-  /// unfitted spheres' as it is. Off by default: it takes CGAL's man
-  /// (`--repair`) from 3.61 / 0.469 to 2.98 / 0.256 (the fit's 27 rounds
-  /// run where the guard stopped it after round 4), and the rest of the
-  /// shapes measured to the same bytes, but the Chinese dragon
-  /// (`--repair`) from χ 2 to −6 (docs/reconstruction_medial.md, "The
-  /// topology").
-  bool guard_counts_filled_cavities = false;
+  /// Which of the fitted rounds' cavities the fit's topology guard counts
+  /// as filled. `air` (the default): a bubble of a crease's air that a round
+  /// seals is no loss, the fill takes it away after the fit (CGAL's man
+  /// `--repair`: 3.64 / 0.482 → 2.94 / 0.252, one component, the fit's 30
+  /// rounds run where counting the bubbles stopped it after round 4), while
+  /// a hollow in the input's solid stays a defect: counted as filled
+  /// (`all`, `skelconv skeletonize --medial-guard-counts-filled-cavities`),
+  /// the Chinese dragon's hollows no longer paid for the tunnels its rounds
+  /// opened with them, and the fill closed the hollows and left the tunnels
+  /// (χ 2 → −2). `none` (`--medial-guard-counts-every-cavity`) counts every
+  /// cavity as a defect.
+  GuardFilledCavities guard_filled_cavities = GuardFilledCavities::air;
   /// Where the fitted result has more tunnels than the input, the medial
   /// mesh is simplified again with every loop of three edges closed whose
   /// triangle the input holds (QuadricOptions::inside_samples: the input's
