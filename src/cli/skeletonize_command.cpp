@@ -234,13 +234,13 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
       [&options] { options.medial.guard_filled_cavities = reconstruct::GuardFilledCavities::all; },
       "The medial fit's topology guard counts each fitted round as the cavity fill after the fit leaves it, hollows "
       "inside the input too (by default only bubbles of a crease's air; worse on CGAL's Chinese dragon: "
-      "docs/reconstruction_medial.md, \"The guard counting cavities as filled\")");
+      "docs/reconstruction_medial.md, \"The guard counting a crease's bubbles of air as filled\")");
   command
       ->add_flag_callback(
           "--medial-guard-counts-every-cavity",
           [&options] { options.medial.guard_filled_cavities = reconstruct::GuardFilledCavities::none; },
           "The medial fit's topology guard counts every cavity of a fitted round as a defect, bubbles of a "
-          "crease's air too (docs/reconstruction_medial.md, \"The guard counting cavities as filled\")")
+          "crease's air too (docs/reconstruction_medial.md, \"The guard counting a crease's bubbles of air as filled\")")
       ->excludes(all_filled);
   command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees of the curve path (default 90)");
   command->add_option("--prune-span", options.prune_span,

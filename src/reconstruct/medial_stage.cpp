@@ -428,12 +428,12 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // takes away. Counted as losses, a bubble stops the fit where its rounds
   // seal a crease's mouth (CGAL's man: round 5 of 30 sealed one under the
   // chin, and the fit stopped after round 4 at 3.64 / 0.482). A hollow in
-  // the input's solid stays a loss: the fill's sphere there is capped at
-  // depth / σ and may not close it (CGAL's Chinese dragon, its hollows
-  // counted as filled: χ 2 → −2). The unfitted surface counted as filled
-  // too bounds the rounds by a tunnel of the unfitted spheres that the
-  // input's sub-facet tunnels make look like progress (the man's first
-  // round closed it: the fit kept round 0).
+  // the input's solid stays a loss: counted as filled, the hollows a round
+  // opens no longer pay for the tunnels it opens too, and the guard takes
+  // rounds with both (CGAL's Chinese dragon: χ 2 → −2). The unfitted
+  // surface counted as filled too bounds the rounds by a tunnel of the
+  // unfitted spheres that the input's sub-facet tunnels make look like
+  // progress (the man's first round closed it: the fit kept round 0).
   GuardFilledCavities as_filled = m.guard_filled_cavities;
   const auto fitted = [&](const MedialMesh& start, MedialFitReport* fit_report) {
     Stage s;

@@ -29,14 +29,13 @@ enum class SkeletonMethod { curve, medial, automatic };
 /// Which cavities of the fit's rounds the medial fit's topology guard counts
 /// as the cavity fill after the fit will leave them (no defect), the
 /// unfitted spheres' surface always as it is (docs/reconstruction_medial.md,
-/// "The guard counting cavities as filled").
+/// "The guard counting a crease's bubbles of air as filled").
 enum class GuardFilledCavities {
   none,  ///< every cavity a defect
   air,   ///< the bubbles of a crease's air (centre outside the input) filled, hollows in its solid defects
   all,   ///< every cavity the fill fills, hollows in the input's solid too
 };
 
-/// The medial-mesh path (docs/reconstruction_medial.md).
 /// When the medial path joins each thin protrusion it keeps (pruning.hpp,
 /// TipOptions) to the body again, along its pruned medial path or by an
 /// edge between overlapping balls (TipOptions::connect). Kept apart, the
@@ -54,6 +53,7 @@ enum class TipJoin {
   always,
 };
 
+/// The medial-mesh path (docs/reconstruction_medial.md).
 struct MedialOptions {
   /// At most this many primitives (SCALIS triangles, segments, points).
   std::size_t budget = 500;
@@ -215,8 +215,9 @@ struct MedialOptions {
   /// Which of the fitted rounds' cavities the fit's topology guard counts
   /// as filled. `air` (the default): a bubble of a crease's air that a round
   /// seals is no loss, the fill takes it away after the fit (CGAL's man
-  /// `--repair`: 3.64 / 0.482 → 2.94 / 0.252, one component, the fit's 30
-  /// rounds run where counting the bubbles stopped it after round 4), while
+  /// `--repair`: counted as defects, the bubbles stopped the fit after round
+  /// 4 of 30 at 3.64 / 0.482; counted as filled, all 30 rounds run, 2.94 /
+  /// 0.252, one component), while
   /// a hollow in the input's solid stays a defect: counted as filled
   /// (`all`, `skelconv skeletonize --medial-guard-counts-filled-cavities`),
   /// the Chinese dragon's hollows no longer paid for the tunnels its rounds
