@@ -677,6 +677,26 @@ bool is_binary_stl(const std::string& bytes) {
   return bytes.size() == 84 + 50 * std::uint64_t(count);
 }
 
+/// Whether `bytes` holds a NUL byte, which no text file has and a binary
+/// STL all but always does (each facet ends in two attribute bytes, zero
+/// unless an exporter stores colours there, and a coordinate or normal
+/// component 0 is four). Used only to name the problem of an STL file of
+/// neither form: a binary one cut short or padded would otherwise be read
+/// as ASCII text and fail at its first word.
+bool looks_binary(const std::string& bytes) { return bytes.find('\0') != std::string::npos; }
+
+/// The message for a file that looks binary but whose size is not the
+/// 84 + 50 × count that its facet count gives.
+InputError binary_stl_size_error(const std::string& bytes, const std::string& where) {
+  std::uint32_t count = 0;
+  for (int k = 3; k >= 0; --k) count = count << 8 | std::uint8_t(bytes[80 + std::size_t(k)]);
+  return InputError(fmt::format("a binary STL file whose size does not match its facet count: bytes 80 to 83 say "
+                                "{} facets, 84 + 50 × {} = {} bytes, but the file has {} bytes (cut short, or "
+                                "bytes after the last facet)",
+                                count, count, 84 + 50 * std::uint64_t(count), bytes.size()),
+                    where);
+}
+
 float little_endian_float(const char* p) {
   std::uint32_t bits = 0;
   for (int k = 3; k >= 0; --k) bits = bits << 8 | std::uint8_t(p[k]);
@@ -755,9 +775,11 @@ TriangleMesh read_mesh(const std::filesystem::path& path, std::size_t max_triang
     throw InputError("unknown mesh format \"" + path.extension().string() + "\" (use .ply, .obj, .off or .stl)",
                      path.string());
   const std::string bytes = read_text_file(path, "mesh file");
-  if (extension == ".stl")
-    return is_binary_stl(bytes) ? read_binary_stl(bytes, max_triangles, path.string())
-                                : read_ascii_stl(bytes, max_triangles, path.string());
+  if (extension == ".stl") {
+    if (is_binary_stl(bytes)) return read_binary_stl(bytes, max_triangles, path.string());
+    if (bytes.size() >= 84 && looks_binary(bytes)) throw binary_stl_size_error(bytes, path.string());
+    return read_ascii_stl(bytes, max_triangles, path.string());
+  }
   if (extension == ".ply") return read_ply(bytes, max_triangles, path.string());
   if (extension == ".off") return read_off(bytes, max_triangles, path.string());
   return read_obj(bytes, max_triangles, path.string());
