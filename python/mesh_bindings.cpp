@@ -144,7 +144,8 @@ reconstruct::SkeletonMethod skeleton_method(const std::string& name) {
 
 /// The skeleton `skelconv skeletonize` writes for the closed mesh
 /// (vertices, triangles), as a Skeleton: the same merge of coincident
-/// vertices, checks of the mesh (or repair: `--repair`), noise,
+/// vertices, checks of the mesh (or repair: `--repair`), removal of the
+/// vertices of no triangle, noise,
 /// reconstruction and skeleton file.
 Skeleton skeletonize(const DoubleArray& vertices, const IndexArray& triangles,
                      const reconstruct::ReconstructOptions& options, double noise, std::size_t max_triangles,
@@ -156,6 +157,7 @@ Skeleton skeletonize(const DoubleArray& vertices, const IndexArray& triangles,
     reconstruct::check_mesh_size(input, max_triangles);
     if (repair) reconstruct::check_closed_mesh_repairing(input);
     else reconstruct::check_closed_mesh_offering_repair(input, "repair=True");
+    reconstruct::remove_unused_vertices(input);
     const TriangleMesh samples = reconstruct::with_sample_noise(input, noise);
     return reconstruct::skeleton_file_text(reconstruct::reconstruct(samples, options).stages.back(), options);
   });

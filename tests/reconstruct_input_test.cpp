@@ -666,6 +666,30 @@ TEST(MeshCheck, OpenMeshNamesAnEdgeAndTheIgnoredTriangles) {
   }
 }
 
+// Vertices of no triangle are removed, the others keep their order and the
+// triangles their corners: the cube with a stray vertex first, one between
+// its vertices and one at the end (normals carried along) is the cube again.
+TEST(MeshCheck, UnusedVerticesAreRemoved) {
+  const TriangleMesh cube = unit_cube();
+  TriangleMesh m;
+  m.vertices.push_back(Vec3(1000, 1000, 1000));
+  for (std::size_t i = 0; i < cube.vertices.size(); ++i) {
+    if (i == 4) m.vertices.push_back(Vec3(-5, 0, 0));
+    m.vertices.push_back(cube.vertices[i]);
+  }
+  m.vertices.push_back(Vec3(0, 0, 7));
+  for (const Vec3& v : m.vertices) m.normals.push_back(v);  // a normal per vertex, tracing it
+  for (auto t : cube.triangles) {
+    for (std::int32_t& i : t) i += i < 4 ? 1 : 2;
+    m.triangles.push_back(t);
+  }
+  EXPECT_EQ(remove_unused_vertices(m), 3u);
+  EXPECT_EQ(m.vertices, cube.vertices);
+  EXPECT_EQ(m.normals, cube.vertices);
+  EXPECT_EQ(m.triangles, cube.triangles);
+  EXPECT_EQ(remove_unused_vertices(m), 0u);
+}
+
 /// `mesh`'s triangles as the sets of their corners' positions, sorted: the
 /// same surface whatever the vertex numbering and the first corner.
 std::vector<std::array<std::array<double, 3>, 3>> triangle_positions(const TriangleMesh& m) {

@@ -326,12 +326,15 @@ int run_skeletonize(const SkeletonizeOptions& options) {
     } catch (const InputError& error) {
       throw error.inside(options.input_path);
     }
+    const std::size_t unused = reconstruct::remove_unused_vertices(input);
     const double repair_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - repair_start).count();
     if (ro.progress) {
+      std::vector<std::string> cleaned;
+      if (merged) cleaned.push_back(fmt::format("{} vertices at the position of another merged into it", merged));
+      if (unused) cleaned.push_back(fmt::format("{} vertices of no triangle removed", unused));
       ro.progress(fmt::format("read {} vertices, {} triangles{}", read_vertices, read_triangles,
-                              merged ? fmt::format(" ({} vertices at the position of another merged into it)", merged)
-                                     : std::string()));
+                              cleaned.empty() ? std::string() : fmt::format(" ({})", fmt::join(cleaned, "; "))));
       if (const reconstruct::SurfaceRepair& s = repair.surface; s.repaired()) {
         std::string done;
         if (s.non_manifold_edges)

@@ -12,6 +12,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -600,15 +601,31 @@ class OffWords {
   std::string where_;
 };
 
-/// OFF (Geomview): "OFF" (or "COFF"), then the vertex, face and edge
-/// counts, one vertex "x y z" per line, one face "n i0 … i(n−1)" (0-based)
-/// per line; what follows on a vertex's or a face's line (a colour) is
-/// ignored.
+/// Whether `keyword` is Geomview's OFF keyword for 3-D vertices: "OFF"
+/// after any of the prefixes "ST" (texture coordinates), "C" (a colour) and
+/// "N" (a normal) that say what follows x y z on a vertex's line (NOFF is
+/// what CGAL and MeshLab write with normals). "4" and "n" (4-D and n-D
+/// vertices) are not 3-D surfaces.
+bool is_off_keyword(std::string_view keyword) {
+  if (!keyword.ends_with("OFF")) return false;
+  keyword.remove_suffix(3);
+  if (keyword.starts_with("ST")) keyword.remove_prefix(2);
+  if (keyword.starts_with("C")) keyword.remove_prefix(1);
+  if (keyword.starts_with("N")) keyword.remove_prefix(1);
+  return keyword.empty();
+}
+
+/// OFF (Geomview): "OFF" (or "COFF", "NOFF", "STCNOFF"...), then the
+/// vertex, face and edge counts, one vertex "x y z" per line, one face "n
+/// i0 … i(n−1)" (0-based) per line; what follows on a vertex's or a face's
+/// line (a normal, a colour, texture coordinates) is ignored.
 TriangleMesh read_off(const std::string& text, std::size_t max_triangles, const std::string& where) {
   OffWords words(text, where);
   std::string keyword = words.word("the OFF keyword");
-  if (keyword != "OFF" && keyword != "COFF")
-    throw InputError("an OFF file starts with \"OFF\" or \"COFF\", got \"" + keyword + "\"", words.at());
+  if (!is_off_keyword(keyword))
+    throw InputError("an OFF file starts with \"OFF\" (or \"COFF\", \"NOFF\", \"STOFF\": 3-D vertices), got \"" +
+                         keyword + "\"",
+                     words.at());
   const std::int64_t vertex_count = words.count("the vertex count");
   const std::int64_t face_count = words.count("the face count");
   words.count("the edge count");
@@ -677,6 +694,26 @@ bool is_binary_stl(const std::string& bytes) {
   return bytes.size() == 84 + 50 * std::uint64_t(count);
 }
 
+/// Whether `bytes` holds a NUL byte, which no text file has and a binary
+/// STL all but always does (each facet ends in two attribute bytes, zero
+/// unless an exporter stores colours there, and a coordinate or normal
+/// component 0 is four). Used only to name the problem of an STL file of
+/// neither form: a binary one cut short or padded would otherwise be read
+/// as ASCII text and fail at its first word.
+bool looks_binary(const std::string& bytes) { return bytes.find('\0') != std::string::npos; }
+
+/// The message for a file that looks binary but whose size is not the
+/// 84 + 50 × count that its facet count gives.
+InputError binary_stl_size_error(const std::string& bytes, const std::string& where) {
+  std::uint32_t count = 0;
+  for (int k = 3; k >= 0; --k) count = count << 8 | std::uint8_t(bytes[80 + std::size_t(k)]);
+  return InputError(fmt::format("a binary STL file whose size does not match its facet count: bytes 80 to 83 say "
+                                "{} facets, 84 + 50 × {} = {} bytes, but the file has {} bytes (cut short, or "
+                                "bytes after the last facet)",
+                                count, count, 84 + 50 * std::uint64_t(count), bytes.size()),
+                    where);
+}
+
 float little_endian_float(const char* p) {
   std::uint32_t bits = 0;
   for (int k = 3; k >= 0; --k) bits = bits << 8 | std::uint8_t(p[k]);
@@ -713,11 +750,14 @@ TriangleMesh read_ascii_stl(const std::string& text, std::size_t max_triangles, 
   for (int line_number = 1; std::getline(lines, line); ++line_number) {
     const std::string at = fmt::format("{}: line {}", where, line_number);
     std::istringstream words(line);
-    std::string keyword;
-    if (!(words >> keyword)) continue;
+    std::string written;
+    if (!(words >> written)) continue;
+    // The keywords are lower case in the format, upper case from some
+    // exporters ("SOLID", "FACET NORMAL"): either is read.
+    const std::string keyword = lower(written);
     if (ended) throw InputError("text after \"endsolid\"", at);
     if (!solid) {
-      if (keyword != "solid") throw InputError("an ASCII STL file starts with \"solid\", got \"" + keyword + "\"", at);
+      if (keyword != "solid") throw InputError("an ASCII STL file starts with \"solid\", got \"" + written + "\"", at);
       solid = true;
     } else if (keyword == "facet" || keyword == "endloop") {
       if (keyword == "endloop" && corner != 3) throw InputError("a loop needs exactly 3 vertices", at);
@@ -739,7 +779,7 @@ TriangleMesh read_ascii_stl(const std::string& text, std::size_t max_triangles, 
       if (corner != -1) throw InputError("\"endsolid\" inside a facet", at);
       ended = true;
     } else {
-      throw InputError("unknown STL keyword \"" + keyword + "\"", at);
+      throw InputError("unknown STL keyword \"" + written + "\"", at);
     }
   }
   if (!solid) throw InputError("the file is empty: an ASCII STL file starts with \"solid\"", where);
@@ -755,9 +795,11 @@ TriangleMesh read_mesh(const std::filesystem::path& path, std::size_t max_triang
     throw InputError("unknown mesh format \"" + path.extension().string() + "\" (use .ply, .obj, .off or .stl)",
                      path.string());
   const std::string bytes = read_text_file(path, "mesh file");
-  if (extension == ".stl")
-    return is_binary_stl(bytes) ? read_binary_stl(bytes, max_triangles, path.string())
-                                : read_ascii_stl(bytes, max_triangles, path.string());
+  if (extension == ".stl") {
+    if (is_binary_stl(bytes)) return read_binary_stl(bytes, max_triangles, path.string());
+    if (bytes.size() >= 84 && looks_binary(bytes)) throw binary_stl_size_error(bytes, path.string());
+    return read_ascii_stl(bytes, max_triangles, path.string());
+  }
   if (extension == ".ply") return read_ply(bytes, max_triangles, path.string());
   if (extension == ".off") return read_off(bytes, max_triangles, path.string());
   return read_obj(bytes, max_triangles, path.string());

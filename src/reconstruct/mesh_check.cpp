@@ -181,6 +181,29 @@ std::size_t merge_coincident_vertices(TriangleMesh& mesh) {
   return merged;
 }
 
+std::size_t remove_unused_vertices(TriangleMesh& mesh) {
+  std::vector<bool> used(mesh.vertices.size(), false);
+  for (const auto& t : mesh.triangles)
+    for (std::int32_t i : t)
+      if (i >= 0 && std::size_t(i) < used.size()) used[std::size_t(i)] = true;
+  std::vector<std::int32_t> new_index(mesh.vertices.size(), -1);
+  std::vector<Vec3> kept;
+  std::vector<Vec3> kept_normals;
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    if (!used[i]) continue;
+    new_index[i] = std::int32_t(kept.size());
+    kept.push_back(mesh.vertices[i]);
+    if (!mesh.normals.empty()) kept_normals.push_back(mesh.normals[i]);
+  }
+  const std::size_t removed = mesh.vertices.size() - kept.size();
+  if (removed == 0) return 0;
+  for (auto& t : mesh.triangles)
+    for (std::int32_t& i : t) i = new_index[std::size_t(i)];
+  mesh.vertices = std::move(kept);
+  mesh.normals = std::move(kept_normals);
+  return removed;
+}
+
 void check_mesh_size(const TriangleMesh& mesh, std::size_t max_triangles) {
   if (mesh.triangles.size() > max_triangles) {
     throw InputError(fmt::format("the mesh has {} triangles, more than the limit {} (--max-triangles): raise "

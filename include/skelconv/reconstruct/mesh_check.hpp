@@ -26,6 +26,16 @@ void check_mesh_size(const TriangleMesh& mesh, std::size_t max_triangles);
 /// every edge. Positions a rounding apart stay distinct.
 std::size_t merge_coincident_vertices(TriangleMesh& mesh);
 
+/// Removes the vertices of `mesh` that no triangle uses (triangles
+/// renumbered, the order of the others kept) and returns how many were
+/// removed. Such a vertex is no point of the surface, yet every vertex is a
+/// sample of the medial graph and widens the bounding box that the
+/// tolerances, the sampling and the report's distances are relative to: one
+/// stray vertex 1,000 away from a unit shape made its skeleton a single
+/// ball and the measuring fail. Call it once the mesh is checked, so that
+/// the checks' messages name the file's vertex indices.
+std::size_t remove_unused_vertices(TriangleMesh& mesh);
+
 /// Throws InputError naming the first problem of `mesh` (for edges, one
 /// example edge by its two vertex indices):
 /// - empty: no triangle (or a triangle with a repeated vertex only);
