@@ -75,13 +75,20 @@ class FarRuleBatch {
   /// choose (Ball false) and choose_near for degree I and one kind.
   template <int I, bool Scalis, bool Ball>
   void choose_impl(const Vec3& p, double radius, double tolerance, std::uint8_t* nodes) const;
-  /// terms for degree I and one kind, with or without ∇f.
+  /// terms for degree I and one kind, with or without ∇f, each rule's
+  /// nodes summed on `Lanes` lanes: 2 (SSE2) or 4 (AVX; far_rule_batch.cpp).
+  template <int I, bool Scalis, bool Gradient, int Lanes>
+  void terms_lanes(const Vec3& p, std::size_t first, const std::uint8_t* nodes, Terms& out) const;
+  /// terms_lanes on 2 lanes, and on 4 for processors with AVX: the same bits.
   template <int I, bool Scalis, bool Gradient>
   void terms_impl(const Vec3& p, std::size_t first, const std::uint8_t* nodes, Terms& out) const;
+  template <int I, bool Scalis, bool Gradient>
+  [[gnu::target("avx")]] void terms_impl_avx(const Vec3& p, std::size_t first, const std::uint8_t* nodes,
+                                             Terms& out) const;
   /// Those passes at [degree] (far_rule_batch.cpp).
   template <bool Scalis, bool Ball, int... I>
   static constexpr auto choose_table(std::integer_sequence<int, I...>);
-  template <bool Scalis, bool Gradient, int... I>
+  template <bool Scalis, bool Gradient, bool Avx, int... I>
   static constexpr auto terms_table(std::integer_sequence<int, I...>);
 
   std::vector<FarSegmentRule> rules_;
