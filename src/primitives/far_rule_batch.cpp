@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <emmintrin.h>
 #include <immintrin.h>
 #include <limits>
@@ -19,8 +20,6 @@ namespace skelconv::detail {
 namespace far_rule_batch {
 namespace {
 
-using far_rule::lanes_half_power;
-
 /// Segments whose scratch (S at both ends of a ball, or at P) lives on the
 /// stack; longer lists allocate it.
 constexpr std::size_t stack_segments = 1024;
@@ -29,11 +28,6 @@ using Scratch = boost::container::small_vector<double, stack_segments>;
 /// Lane 0, lane 1.
 double low(__m128d v) { return _mm_cvtsd_f64(v); }
 double high(__m128d v) { return _mm_cvtsd_f64(_mm_unpackhi_pd(v, v)); }
-
-/// (x² + y²) + z², as Eigen's squaredNorm of a Vec3 adds them.
-__m128d squared_norm(__m128d x, __m128d y, __m128d z) {
-  return _mm_add_pd(_mm_add_pd(_mm_mul_pd(x, x), _mm_mul_pd(y, y)), _mm_mul_pd(z, z));
-}
 
 /// Two segments' values of `v` in lanes 0 and 1 (the same one twice for a
 /// list's odd last segment).
@@ -99,6 +93,9 @@ bool has_avx() {
   return avx;
 }
 
+/// 4 lanes only where the processor runs them; anything else is SSE2's 2.
+bool on_avx(int lanes) { return lanes == 4 && has_avx(); }
+
 }  // namespace
 }  // namespace far_rule_batch
 
@@ -145,12 +142,15 @@ std::optional<FarRuleBatch> FarRuleBatch::make(std::span<const FarSegmentRule> r
   return batch;
 }
 
-template <int I, bool Scalis, bool Ball>
-void FarRuleBatch::choose_impl(const Vec3& p, double radius, double tolerance, std::uint8_t* nodes) const {
+template <int I, bool Scalis, bool Ball, int Lanes>
+[[gnu::always_inline]] inline void FarRuleBatch::choose_lanes(const Vec3& p, double radius, double tolerance,
+                                                              std::uint8_t* nodes) const {
   using namespace far_rule_batch;
+  using far_rule::lanes_of;
+  using far_rule::lanes_sqrt;
   const std::size_t count = rules_.size();
-  // Per segment, two at a time: Q at the ends, S (at P, or its least and
-  // largest over the ball) and the lower bound, added to f̲ in order.
+  // Per segment, `Lanes` at a time: Q at the ends, S (at P, or its least
+  // and largest over the ball) and the lower bound, added to f̲ in order.
   Scratch least(count), largest(Ball ? count : 0);
   // The columns' addresses in locals: the stores below (bytes) could alias
   // any member as far as the compiler knows, which would reload them.
@@ -162,47 +162,59 @@ void FarRuleBatch::choose_impl(const Vec3& p, double radius, double tolerance, s
                *gradient_factor = gradient_factor_.data();
   const std::uint8_t* weight_varies = weight_varies_.data();
   const FarSegmentRule* rules = rules_.data();
-  const __m128d p_x = _mm_set1_pd(p.x()), p_y = _mm_set1_pd(p.y()), p_z = _mm_set1_pd(p.z());
-  const __m128d twice_radius = _mm_set1_pd(2 * radius), ball_radius = _mm_set1_pd(radius);
   double lower = 0;
-  // Segments k and k + 1 (`load` reads a column's pair), or the last one
-  // alone (`load` repeats it in both lanes; lane 1 then unused).
-  const auto two = [&](std::size_t k, bool both, auto load) {
-    const __m128d pa_x = _mm_sub_pd(p_x, load(a_x)), pa_y = _mm_sub_pd(p_y, load(a_y)),
-                  pa_z = _mm_sub_pd(p_z, load(a_z));
-    const __m128d pb_x = _mm_sub_pd(pa_x, load(ab_x)), pb_y = _mm_sub_pd(pa_y, load(ab_y)),
-                  pb_z = _mm_sub_pd(pa_z, load(ab_z));
-    const __m128d q_a = _mm_add_pd(squared_norm(pa_x, pa_y, pa_z), load(offset_a));
-    const __m128d q_b = _mm_add_pd(squared_norm(pb_x, pb_y, pb_z), load(offset_b));
-    const __m128d to_centroid = squared_norm(_mm_sub_pd(p_x, load(centroid_x)), _mm_sub_pd(p_y, load(centroid_y)),
-                                             _mm_sub_pd(p_z, load(centroid_z)));
-    __m128d mean_square;
+  // Segments k … k + used − 1, one per lane of the vector `load` returns (a
+  // column's values from k on, or segment k in every lane when used = 1):
+  // on each lane the operations of the SSE2 pass, in the same order.
+  const auto segments = [&](std::size_t k, std::size_t used, auto load) __attribute__((always_inline)) {
+    using V = decltype(load(a_x));
+    const V pa_x = lanes_of<V>(p.x()) - load(a_x), pa_y = lanes_of<V>(p.y()) - load(a_y),
+            pa_z = lanes_of<V>(p.z()) - load(a_z);
+    const V pb_x = pa_x - load(ab_x), pb_y = pa_y - load(ab_y), pb_z = pa_z - load(ab_z);
+    // (x² + y²) + z², as Eigen's squaredNorm of a Vec3 adds them.
+    const V q_a = ((pa_x * pa_x + pa_y * pa_y) + pa_z * pa_z) + load(offset_a);
+    const V q_b = ((pb_x * pb_x + pb_y * pb_y) + pb_z * pb_z) + load(offset_b);
+    const V c_x = lanes_of<V>(p.x()) - load(centroid_x), c_y = lanes_of<V>(p.y()) - load(centroid_y),
+            c_z = lanes_of<V>(p.z()) - load(centroid_z);
+    const V to_centroid = (c_x * c_x + c_y * c_y) + c_z * c_z;
+    V mean_square;
     if constexpr (Ball) {  // ball_mean_square
-      const __m128d far = _mm_add_pd(_mm_sqrt_pd(to_centroid), ball_radius);
-      mean_square = _mm_add_pd(_mm_mul_pd(far, far), load(spread));
+      const V far = lanes_sqrt(to_centroid) + lanes_of<V>(radius);
+      mean_square = far * far + load(spread);
     } else {  // mean_square
-      mean_square = _mm_add_pd(to_centroid, load(spread));
+      mean_square = to_centroid + load(spread);
     }
-    const __m128d term = _mm_mul_pd(load(lower_front), lanes_half_power<I>(_mm_div_pd(load(q_unit), mean_square)));
-    const __m128d roots = _mm_add_pd(_mm_sqrt_pd(q_a), _mm_sqrt_pd(q_b));
-    const __m128d scale = load(two_over_length);
-    __m128d s_least = _mm_mul_pd(roots, scale);
+    const V term = load(lower_front) * far_rule::lanes_half_power<I>(load(q_unit) / mean_square);
+    const V roots = lanes_sqrt(q_a) + lanes_sqrt(q_b);
+    const V scale = load(two_over_length);
+    V s_least = roots * scale, s_largest{};
     if constexpr (Ball) {  // ball_nodes: S over the ball
-      s_least = _mm_mul_pd(_mm_sub_pd(roots, twice_radius), scale);
-      const __m128d s_largest = _mm_mul_pd(_mm_add_pd(roots, twice_radius), scale);
-      largest[k] = low(s_largest);
-      if (both) largest[k + 1] = high(s_largest);
+      s_least = (roots - lanes_of<V>(2 * radius)) * scale;
+      s_largest = (roots + lanes_of<V>(2 * radius)) * scale;
     }
-    least[k] = low(s_least);
-    lower += low(term);
-    if (both) {
-      least[k + 1] = high(s_least);
-      lower += high(term);
+    for (std::size_t lane = 0; lane < used; ++lane) {
+      if constexpr (Ball) largest[k + lane] = s_largest[lane];
+      least[k + lane] = s_least[lane];
+      lower += term[lane];
     }
   };
   std::size_t k = 0;
-  for (; k + 1 < count; k += 2) two(k, true, [k](const double* column) { return _mm_loadu_pd(column + k); });
-  if (k < count) two(k, false, [k](const double* column) { return _mm_set1_pd(column[k]); });
+  if constexpr (Lanes == 4) {
+    using Wide = far_rule::LaneVector<4>::type;
+    for (; k + 3 < count; k += 4) {
+      segments(k, 4, [k](const double* column) __attribute__((always_inline)) {
+        Wide v;
+        std::memcpy(&v, column + k, sizeof v);
+        return v;
+      });
+    }
+  }
+  for (; k + 1 < count; k += 2) {
+    segments(k, 2, [k](const double* column) __attribute__((always_inline)) { return _mm_loadu_pd(column + k); });
+  }
+  if (k < count) {
+    segments(k, 1, [k](const double* column) __attribute__((always_inline)) { return _mm_set1_pd(column[k]); });
+  }
   const double budget = tolerance * lower / double(count);
   if (!(budget > 0.0)) {
     std::fill(nodes, nodes + count, std::uint8_t(0));
@@ -224,6 +236,17 @@ void FarRuleBatch::choose_impl(const Vec3& p, double radius, double tolerance, s
     nodes[k] = std::uint8_t(FarSegmentRule::table_nodes(bins[FarSegmentRule::bin_of(focal_sum)], f_allowed,
                                                         f_allowed * gradient_factor[k], longest));
   }
+}
+
+template <int I, bool Scalis, bool Ball>
+void FarRuleBatch::choose_impl(const Vec3& p, double radius, double tolerance, std::uint8_t* nodes) const {
+  choose_lanes<I, Scalis, Ball, 2>(p, radius, tolerance, nodes);
+}
+
+template <int I, bool Scalis, bool Ball>
+[[gnu::target("avx")]] void FarRuleBatch::choose_impl_avx(const Vec3& p, double radius, double tolerance,
+                                                          std::uint8_t* nodes) const {
+  choose_lanes<I, Scalis, Ball, 4>(p, radius, tolerance, nodes);
 }
 
 template <int I, bool Scalis, bool Gradient, int Lanes>
@@ -337,9 +360,13 @@ using TermsImpl = void (FarRuleBatch::*)(const Vec3&, std::size_t, const std::ui
 
 // The passes' instantiations, per kind at [degree] (classical 1–16, SCALIS
 // 1–10: FarSegmentRule's degrees).
-template <bool Scalis, bool Ball, int... I>
+template <bool Scalis, bool Ball, bool Avx, int... I>
 constexpr auto FarRuleBatch::choose_table(std::integer_sequence<int, I...>) {
-  return std::array<ChooseImpl, sizeof...(I) + 1>{nullptr, &FarRuleBatch::choose_impl<I + 1, Scalis, Ball>...};
+  if constexpr (Avx) {
+    return std::array<ChooseImpl, sizeof...(I) + 1>{nullptr, &FarRuleBatch::choose_impl_avx<I + 1, Scalis, Ball>...};
+  } else {
+    return std::array<ChooseImpl, sizeof...(I) + 1>{nullptr, &FarRuleBatch::choose_impl<I + 1, Scalis, Ball>...};
+  }
 }
 template <bool Scalis, bool Gradient, bool Avx, int... I>
 constexpr auto FarRuleBatch::terms_table(std::integer_sequence<int, I...>) {
@@ -350,21 +377,33 @@ constexpr auto FarRuleBatch::terms_table(std::integer_sequence<int, I...>) {
   }
 }
 
-void FarRuleBatch::choose(const Vec3& p, double tolerance, std::uint8_t* nodes) const {
-  static constexpr auto classical = choose_table<false, false>(std::make_integer_sequence<int, 16>{});
-  static constexpr auto scalis = choose_table<true, false>(std::make_integer_sequence<int, 10>{});
-  (this->*(scalis_ ? scalis[std::size_t(degree_)] : classical[std::size_t(degree_)]))(p, 0.0, tolerance, nodes);
+int FarRuleBatch::widest_lanes() { return far_rule_batch::has_avx() ? 4 : 2; }
+
+void FarRuleBatch::choose(const Vec3& p, double tolerance, std::uint8_t* nodes, int lanes) const {
+  static constexpr auto classical = choose_table<false, false, false>(std::make_integer_sequence<int, 16>{});
+  static constexpr auto scalis = choose_table<true, false, false>(std::make_integer_sequence<int, 10>{});
+  static constexpr auto classical_avx = choose_table<false, false, true>(std::make_integer_sequence<int, 16>{});
+  static constexpr auto scalis_avx = choose_table<true, false, true>(std::make_integer_sequence<int, 10>{});
+  const bool avx = far_rule_batch::on_avx(lanes);
+  const std::size_t at = std::size_t(degree_);
+  const ChooseImpl impl = scalis_ ? (avx ? scalis_avx[at] : scalis[at]) : (avx ? classical_avx[at] : classical[at]);
+  (this->*impl)(p, 0.0, tolerance, nodes);
 }
 
-void FarRuleBatch::choose_near(const Vec3& centre, double radius, double tolerance, std::uint8_t* nodes) const {
-  static constexpr auto classical = choose_table<false, true>(std::make_integer_sequence<int, 16>{});
-  static constexpr auto scalis = choose_table<true, true>(std::make_integer_sequence<int, 10>{});
-  (this->*(scalis_ ? scalis[std::size_t(degree_)] : classical[std::size_t(degree_)]))(centre, radius, tolerance,
-                                                                                        nodes);
+void FarRuleBatch::choose_near(const Vec3& centre, double radius, double tolerance, std::uint8_t* nodes,
+                               int lanes) const {
+  static constexpr auto classical = choose_table<false, true, false>(std::make_integer_sequence<int, 16>{});
+  static constexpr auto scalis = choose_table<true, true, false>(std::make_integer_sequence<int, 10>{});
+  static constexpr auto classical_avx = choose_table<false, true, true>(std::make_integer_sequence<int, 16>{});
+  static constexpr auto scalis_avx = choose_table<true, true, true>(std::make_integer_sequence<int, 10>{});
+  const bool avx = far_rule_batch::on_avx(lanes);
+  const std::size_t at = std::size_t(degree_);
+  const ChooseImpl impl = scalis_ ? (avx ? scalis_avx[at] : scalis[at]) : (avx ? classical_avx[at] : classical[at]);
+  (this->*impl)(centre, radius, tolerance, nodes);
 }
 
-void FarRuleBatch::terms(const Vec3& p, std::size_t first, const std::uint8_t* nodes, bool gradient,
-                         Terms& out) const {
+void FarRuleBatch::terms(const Vec3& p, std::size_t first, const std::uint8_t* nodes, bool gradient, Terms& out,
+                         int lanes) const {
   // [AVX][∇f][degree]
   static constexpr std::array<std::array<decltype(terms_table<false, false, false>(
                                              std::make_integer_sequence<int, 16>{})),
@@ -382,7 +421,7 @@ void FarRuleBatch::terms(const Vec3& p, std::size_t first, const std::uint8_t* n
                terms_table<true, true, false>(std::make_integer_sequence<int, 10>{})},
               {terms_table<true, false, true>(std::make_integer_sequence<int, 10>{}),
                terms_table<true, true, true>(std::make_integer_sequence<int, 10>{})}}};
-  const std::size_t avx = far_rule_batch::has_avx() ? 1 : 0, with_gradient = gradient ? 1 : 0, at = std::size_t(degree_);
+  const std::size_t avx = far_rule_batch::on_avx(lanes) ? 1 : 0, with_gradient = gradient ? 1 : 0, at = std::size_t(degree_);
   const TermsImpl impl = scalis_ ? scalis[avx][with_gradient][at] : classical[avx][with_gradient][at];
   (this->*impl)(p, first, nodes, out);
 }

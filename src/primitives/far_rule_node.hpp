@@ -36,12 +36,14 @@ template <class V>
   return v;
 }
 
-/// √x on every lane (correctly rounded, as sqrtpd).
+/// √x on every lane (correctly rounded): SSE2's sqrtpd, on each half of
+/// AVX's four lanes (AVX's own intrinsic would need AVX code here).
 [[gnu::always_inline]] inline __m128d lanes_sqrt(__m128d x) { return _mm_sqrt_pd(x); }
-template <class V>
+template <class V>  // __m256d (a template: only code that uses AVX's lanes compiles it)
 [[gnu::always_inline]] inline V lanes_sqrt(V x) {
-  for (int lane = 0; lane < int(sizeof(V) / sizeof(double)); ++lane) x[lane] = __builtin_sqrt(x[lane]);
-  return x;
+  const __m128d low = _mm_sqrt_pd(__builtin_shufflevector(x, x, 0, 1));
+  const __m128d high = _mm_sqrt_pd(__builtin_shufflevector(x, x, 2, 3));
+  return __builtin_shufflevector(low, high, 0, 1, 2, 3);
 }
 
 /// x^(I/2) from x, on every lane: from 1, I/2 products, and √x for odd I.
