@@ -106,6 +106,12 @@ class FarRuleBatch {
   static constexpr auto choose_table(std::integer_sequence<int, I...>);
   template <bool Scalis, bool Gradient, bool Avx, int... I>
   static constexpr auto terms_table(std::integer_sequence<int, I...>);
+  /// Those tables for AVX's lanes and SSE2's, and (terms) with and without
+  /// ∇f, at degrees 1 … Degrees.
+  template <bool Scalis, bool Ball, int Degrees>
+  static constexpr auto choose_tables();
+  template <bool Scalis, int Degrees>
+  static constexpr auto terms_tables();
 
   std::vector<FarSegmentRule> rules_;
   int degree_ = 0;

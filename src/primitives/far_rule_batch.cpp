@@ -165,7 +165,8 @@ template <int I, bool Scalis, bool Ball, int Lanes>
   double lower = 0;
   // Segments k … k + used − 1, one per lane of the vector `load` returns (a
   // column's values from k on, or segment k in every lane when used = 1):
-  // on each lane the operations of the SSE2 pass, in the same order.
+  // each lane does the same operations in the same order whatever the
+  // vector's width (2 or 4), hence the same bits.
   const auto segments = [&](std::size_t k, std::size_t used, auto load) __attribute__((always_inline)) {
     using V = decltype(load(a_x));
     const V pa_x = lanes_of<V>(p.x()) - load(a_x), pa_y = lanes_of<V>(p.y()) - load(a_y),
@@ -379,49 +380,41 @@ constexpr auto FarRuleBatch::terms_table(std::integer_sequence<int, I...>) {
 
 int FarRuleBatch::widest_lanes() { return far_rule_batch::has_avx() ? 4 : 2; }
 
+template <bool Scalis, bool Ball, int Degrees>
+constexpr auto FarRuleBatch::choose_tables() {
+  constexpr auto degrees = std::make_integer_sequence<int, Degrees>{};
+  return std::array{choose_table<Scalis, Ball, false>(degrees), choose_table<Scalis, Ball, true>(degrees)};
+}
+template <bool Scalis, int Degrees>
+constexpr auto FarRuleBatch::terms_tables() {
+  constexpr auto degrees = std::make_integer_sequence<int, Degrees>{};
+  return std::array{std::array{terms_table<Scalis, false, false>(degrees), terms_table<Scalis, true, false>(degrees)},
+                    std::array{terms_table<Scalis, false, true>(degrees), terms_table<Scalis, true, true>(degrees)}};
+}
+
+// The tables below: [AVX] or [AVX][∇f], then [degree] (classical 1–16,
+// SCALIS 1–10: FarSegmentRule's degrees).
 void FarRuleBatch::choose(const Vec3& p, double tolerance, std::uint8_t* nodes, int lanes) const {
-  static constexpr auto classical = choose_table<false, false, false>(std::make_integer_sequence<int, 16>{});
-  static constexpr auto scalis = choose_table<true, false, false>(std::make_integer_sequence<int, 10>{});
-  static constexpr auto classical_avx = choose_table<false, false, true>(std::make_integer_sequence<int, 16>{});
-  static constexpr auto scalis_avx = choose_table<true, false, true>(std::make_integer_sequence<int, 10>{});
-  const bool avx = far_rule_batch::on_avx(lanes);
-  const std::size_t at = std::size_t(degree_);
-  const ChooseImpl impl = scalis_ ? (avx ? scalis_avx[at] : scalis[at]) : (avx ? classical_avx[at] : classical[at]);
-  (this->*impl)(p, 0.0, tolerance, nodes);
+  static constexpr auto classical = choose_tables<false, false, 16>();
+  static constexpr auto scalis = choose_tables<true, false, 10>();
+  const std::size_t avx = far_rule_batch::on_avx(lanes) ? 1 : 0, at = std::size_t(degree_);
+  (this->*(scalis_ ? scalis[avx][at] : classical[avx][at]))(p, 0.0, tolerance, nodes);
 }
 
 void FarRuleBatch::choose_near(const Vec3& centre, double radius, double tolerance, std::uint8_t* nodes,
                                int lanes) const {
-  static constexpr auto classical = choose_table<false, true, false>(std::make_integer_sequence<int, 16>{});
-  static constexpr auto scalis = choose_table<true, true, false>(std::make_integer_sequence<int, 10>{});
-  static constexpr auto classical_avx = choose_table<false, true, true>(std::make_integer_sequence<int, 16>{});
-  static constexpr auto scalis_avx = choose_table<true, true, true>(std::make_integer_sequence<int, 10>{});
-  const bool avx = far_rule_batch::on_avx(lanes);
-  const std::size_t at = std::size_t(degree_);
-  const ChooseImpl impl = scalis_ ? (avx ? scalis_avx[at] : scalis[at]) : (avx ? classical_avx[at] : classical[at]);
-  (this->*impl)(centre, radius, tolerance, nodes);
+  static constexpr auto classical = choose_tables<false, true, 16>();
+  static constexpr auto scalis = choose_tables<true, true, 10>();
+  const std::size_t avx = far_rule_batch::on_avx(lanes) ? 1 : 0, at = std::size_t(degree_);
+  (this->*(scalis_ ? scalis[avx][at] : classical[avx][at]))(centre, radius, tolerance, nodes);
 }
 
 void FarRuleBatch::terms(const Vec3& p, std::size_t first, const std::uint8_t* nodes, bool gradient, Terms& out,
                          int lanes) const {
-  // [AVX][∇f][degree]
-  static constexpr std::array<std::array<decltype(terms_table<false, false, false>(
-                                             std::make_integer_sequence<int, 16>{})),
-                                         2>,
-                              2>
-      classical{{{terms_table<false, false, false>(std::make_integer_sequence<int, 16>{}),
-                  terms_table<false, true, false>(std::make_integer_sequence<int, 16>{})},
-                 {terms_table<false, false, true>(std::make_integer_sequence<int, 16>{}),
-                  terms_table<false, true, true>(std::make_integer_sequence<int, 16>{})}}};
-  static constexpr std::array<std::array<decltype(terms_table<true, false, false>(
-                                             std::make_integer_sequence<int, 10>{})),
-                                         2>,
-                              2>
-      scalis{{{terms_table<true, false, false>(std::make_integer_sequence<int, 10>{}),
-               terms_table<true, true, false>(std::make_integer_sequence<int, 10>{})},
-              {terms_table<true, false, true>(std::make_integer_sequence<int, 10>{}),
-               terms_table<true, true, true>(std::make_integer_sequence<int, 10>{})}}};
-  const std::size_t avx = far_rule_batch::on_avx(lanes) ? 1 : 0, with_gradient = gradient ? 1 : 0, at = std::size_t(degree_);
+  static constexpr auto classical = terms_tables<false, 16>();
+  static constexpr auto scalis = terms_tables<true, 10>();
+  const std::size_t avx = far_rule_batch::on_avx(lanes) ? 1 : 0, with_gradient = gradient ? 1 : 0;
+  const std::size_t at = std::size_t(degree_);
   const TermsImpl impl = scalis_ ? scalis[avx][with_gradient][at] : classical[avx][with_gradient][at];
   (this->*impl)(p, first, nodes, out);
 }
