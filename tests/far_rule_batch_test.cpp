@@ -13,6 +13,7 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <cstdio>
 #include <random>
 #include <utility>
 #include <vector>
@@ -166,6 +167,66 @@ TEST(FarRuleBatch, SameBitsAsOneSegmentAtATimeOnClassicalWalks) {
 TEST(FarRuleBatch, SameBitsAsOneSegmentAtATimeOnScalisWalks) {
   expect_same_as_one_at_a_time(scalis_walk_skeleton({97, 4, 1.0, 0.1, 0.6}, 13), "SCALIS degree 4");
   expect_same_as_one_at_a_time(scalis_walk_skeleton({33, 7, 2.0, 0.3, 2.0}, 14), "SCALIS degree 7");
+}
+
+/// The batch's own passes on `lanes` lanes (SSE2's 2, AVX's 4) against the
+/// per-segment calls: the rules at points and over balls of radius 0.1, and
+/// every chunk's terms (FarSegmentRule::evaluate_nodes, or the exact
+/// function where it declines), bit for bit. Returns the (point, pass)
+/// pairs that differ.
+int lanes_differing(const Skeleton& skeleton, int lanes, const char* name) {
+  const std::vector<FarSegmentRule> rules = rules_of(skeleton);
+  const FarRuleBatch batch = *FarRuleBatch::make(rules);
+  std::vector<std::uint8_t> nodes(rules.size()), ball_nodes(rules.size());
+  int differing = 0, by_rules = 0;
+  for (double tolerance : {1e-12, 1e-6}) {
+    for (const Vec3& p : probe_points(skeleton, 120, 9)) {
+      batch.choose(p, tolerance, nodes.data(), lanes);
+      batch.choose_near(p, 0.1, tolerance, ball_nodes.data(), lanes);
+      differing += nodes != nodes_one_at_a_time(rules, p, -1, tolerance);
+      differing += ball_nodes != nodes_one_at_a_time(rules, p, 0.1, tolerance);
+      for (bool gradient : {false, true}) {
+        for (std::size_t first = 0; first < rules.size(); first += FarRuleBatch::chunk) {
+          FarRuleBatch::Terms terms;
+          batch.terms(p, first, nodes.data(), gradient, terms, lanes);
+          bool same = terms.size == std::min(FarRuleBatch::chunk, rules.size() - first);
+          for (std::size_t j = 0; j < terms.size; ++j) {
+            const std::size_t k = first + terms.order[j];
+            FieldSample term;
+            const bool by_rule = nodes[k] != 0 && rules[k].evaluate_nodes(p, nodes[k], gradient, term);
+            same = same && terms.exact[j] == !by_rule;
+            if (!by_rule) continue;
+            ++by_rules;
+            same = same && same_bits(terms.value[j], term.value);
+            if (gradient) {
+              same = same && same_bits(terms.gradient_x[j], term.gradient.x()) &&
+                     same_bits(terms.gradient_y[j], term.gradient.y()) &&
+                     same_bits(terms.gradient_z[j], term.gradient.z());
+            }
+          }
+          differing += !same;
+        }
+      }
+    }
+  }
+  EXPECT_GT(by_rules, 0) << name;  // the rules are in use
+  return differing;
+}
+
+TEST(FarRuleBatch, SameBitsOnSse2AndAvxLanes) {
+  const Skeleton classical = walk_skeleton({201, 4, 4.0, {1.0}}, bench_walk_seed);
+  const Skeleton cubic = walk_skeleton({40, 8, 1.0, {0.5, 0.0, 0.25, 1.0}}, 12);
+  const Skeleton scalis = scalis_walk_skeleton({97, 4, 1.0, 0.1, 0.6}, 13);
+  const Skeleton scalis_odd = scalis_walk_skeleton({33, 7, 2.0, 0.3, 2.0}, 14);
+  std::vector<int> lanes = {2};
+  if (FarRuleBatch::widest_lanes() == 4) lanes.push_back(4);
+  else std::printf("no AVX on this processor: SSE2's lanes only\n");
+  for (int width : lanes) {
+    EXPECT_EQ(lanes_differing(classical, width, "degree 4"), 0) << width << " lanes";
+    EXPECT_EQ(lanes_differing(cubic, width, "degree 8, cubic weight"), 0) << width << " lanes";
+    EXPECT_EQ(lanes_differing(scalis, width, "SCALIS degree 4"), 0) << width << " lanes";
+    EXPECT_EQ(lanes_differing(scalis_odd, width, "SCALIS degree 7"), 0) << width << " lanes";
+  }
 }
 
 TEST(FarRuleBatch, OnlyListsOfOneKindAndDegree) {

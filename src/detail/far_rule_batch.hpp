@@ -44,13 +44,21 @@ class FarRuleBatch {
   std::size_t size() const { return rules_.size(); }
   const std::vector<FarSegmentRule>& rules() const { return rules_; }
 
+  /// The passes below work on `lanes` segments (or nodes) at a time: 2,
+  /// SSE2's lanes (x86-64's baseline), or 4, AVX's, on processors that have
+  /// it; every lane does the same operations in the same order (no fused
+  /// multiply-add), so the rules and the terms are the same bits either way.
+  /// The widest this processor runs, the default: 4 or 2.
+  static int widest_lanes();
+
   /// The rules at P (Skeleton's tolerance mode, `tolerance` ε > 0): into
   /// nodes[k] the n of segment k, 0 for the exact function; the same n as
   /// FarSegmentRule::nodes with the budget ε f̲ / N.
-  void choose(const Vec3& p, double tolerance, std::uint8_t* nodes) const;
+  void choose(const Vec3& p, double tolerance, std::uint8_t* nodes, int lanes = widest_lanes()) const;
   /// The rules for every point within `radius` of `centre`: the same n as
   /// FarSegmentRule::ball_nodes with f̲ from ball_mean_square.
-  void choose_near(const Vec3& centre, double radius, double tolerance, std::uint8_t* nodes) const;
+  void choose_near(const Vec3& centre, double radius, double tolerance, std::uint8_t* nodes,
+                   int lanes = widest_lanes()) const;
 
   /// The terms of segments first … first + size − 1 (size ≤ chunk) at P,
   /// in the order they are added: the exact ones (n = 0) first, then by n,
@@ -68,21 +76,42 @@ class FarRuleBatch {
   };
   /// The terms of the chunk from `first` by the rules in nodes[first …]:
   /// f and, with `gradient`, ∇f (else ∇f = 0).
-  void terms(const Vec3& p, std::size_t first, const std::uint8_t* nodes, bool gradient, Terms& out) const;
+  void terms(const Vec3& p, std::size_t first, const std::uint8_t* nodes, bool gradient, Terms& out,
+             int lanes = widest_lanes()) const;
 
  private:
   FarRuleBatch() = default;
-  /// choose (Ball false) and choose_near for degree I and one kind.
+  /// choose (Ball false) and choose_near for degree I and one kind, `Lanes`
+  /// segments at a time: 2 (SSE2) or 4 (AVX; far_rule_batch.cpp).
+  template <int I, bool Scalis, bool Ball, int Lanes>
+  void choose_lanes(const Vec3& p, double radius, double tolerance, std::uint8_t* nodes) const;
+  /// choose_lanes on 2 lanes, and on 4 for processors with AVX: the same bits.
   template <int I, bool Scalis, bool Ball>
   void choose_impl(const Vec3& p, double radius, double tolerance, std::uint8_t* nodes) const;
-  /// terms for degree I and one kind, with or without ∇f.
+  template <int I, bool Scalis, bool Ball>
+  [[gnu::target("avx")]] void choose_impl_avx(const Vec3& p, double radius, double tolerance,
+                                              std::uint8_t* nodes) const;
+  /// terms for degree I and one kind, with or without ∇f, each rule's
+  /// nodes summed on `Lanes` lanes: 2 (SSE2) or 4 (AVX; far_rule_batch.cpp).
+  template <int I, bool Scalis, bool Gradient, int Lanes>
+  void terms_lanes(const Vec3& p, std::size_t first, const std::uint8_t* nodes, Terms& out) const;
+  /// terms_lanes on 2 lanes, and on 4 for processors with AVX: the same bits.
   template <int I, bool Scalis, bool Gradient>
   void terms_impl(const Vec3& p, std::size_t first, const std::uint8_t* nodes, Terms& out) const;
+  template <int I, bool Scalis, bool Gradient>
+  [[gnu::target("avx")]] void terms_impl_avx(const Vec3& p, std::size_t first, const std::uint8_t* nodes,
+                                             Terms& out) const;
   /// Those passes at [degree] (far_rule_batch.cpp).
-  template <bool Scalis, bool Ball, int... I>
+  template <bool Scalis, bool Ball, bool Avx, int... I>
   static constexpr auto choose_table(std::integer_sequence<int, I...>);
-  template <bool Scalis, bool Gradient, int... I>
+  template <bool Scalis, bool Gradient, bool Avx, int... I>
   static constexpr auto terms_table(std::integer_sequence<int, I...>);
+  /// Those tables for AVX's lanes and SSE2's, and (terms) with and without
+  /// ∇f, at degrees 1 … Degrees.
+  template <bool Scalis, bool Ball, int Degrees>
+  static constexpr auto choose_tables();
+  template <bool Scalis, int Degrees>
+  static constexpr auto terms_tables();
 
   std::vector<FarSegmentRule> rules_;
   int degree_ = 0;

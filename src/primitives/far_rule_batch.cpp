@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <emmintrin.h>
+#include <immintrin.h>
 #include <limits>
 #include <utility>
 
@@ -18,8 +20,6 @@ namespace skelconv::detail {
 namespace far_rule_batch {
 namespace {
 
-using far_rule::lanes_half_power;
-
 /// Segments whose scratch (S at both ends of a ball, or at P) lives on the
 /// stack; longer lists allocate it.
 constexpr std::size_t stack_segments = 1024;
@@ -29,14 +29,72 @@ using Scratch = boost::container::small_vector<double, stack_segments>;
 double low(__m128d v) { return _mm_cvtsd_f64(v); }
 double high(__m128d v) { return _mm_cvtsd_f64(_mm_unpackhi_pd(v, v)); }
 
-/// (x² + y²) + z², as Eigen's squaredNorm of a Vec3 adds them.
-__m128d squared_norm(__m128d x, __m128d y, __m128d z) {
-  return _mm_add_pd(_mm_add_pd(_mm_mul_pd(x, x), _mm_mul_pd(y, y)), _mm_mul_pd(z, z));
-}
-
 /// Two segments' values of `v` in lanes 0 and 1 (the same one twice for a
 /// list's odd last segment).
 __m128d pair(const double* v, std::size_t k0, std::size_t k1) { return _mm_set_pd(v[k1], v[k0]); }
+
+/// The sums of an n-node rule's even and odd nodes (n even) for the two
+/// segments in the lanes of `segment`.
+struct NodeLaneSums {
+  __m128d f_even, f_odd, g_x_even, g_y_even, g_z_even, g_x_odd, g_y_odd, g_z_odd;
+};
+
+/// NodeLaneSums on `Lanes` lanes. SSE2's 2: one segment per lane, the even
+/// nodes into one sum and the odd ones into another. AVX's 4: the two
+/// segments' even nodes in lanes 0 and 1, their odd nodes in lanes 2 and 3,
+/// so that each lane does what an SSE2 lane does, in the same order
+/// (add_node, without FMA: the same bits), with half the instructions and
+/// divisions. No AVX intrinsic here (GCC's vector operators and shuffles):
+/// it is inlined into terms_impl_avx, whose code is compiled for AVX.
+template <int I, bool Gradient, bool Scalis, int Lanes>
+[[gnu::always_inline]] inline NodeLaneSums sum_nodes(const far_rule::Rule& rule, int n,
+                                                     const far_rule::NodeSegment& segment) {
+  using far_rule::add_node;
+  NodeLaneSums sums{};
+  if constexpr (Lanes == 2) {
+    for (int node = 0; node < n; node += 2) {  // n even
+      const std::size_t even = std::size_t(node), odd = even + 1;
+      add_node<I, Gradient, Scalis>(_mm_set1_pd(rule.t[even]), _mm_set1_pd(rule.g[even]), segment, sums.f_even,
+                                    sums.g_x_even, sums.g_y_even, sums.g_z_even);
+      add_node<I, Gradient, Scalis>(_mm_set1_pd(rule.t[odd]), _mm_set1_pd(rule.g[odd]), segment, sums.f_odd,
+                                    sums.g_x_odd, sums.g_y_odd, sums.g_z_odd);
+    }
+  } else {
+    static_assert(Lanes == 4);
+    using Wide = far_rule::LaneVector<4>::type;
+    // Both segments twice: lanes 0, 1 and again 2, 3.
+    const auto twice = [](__m128d v) -> Wide { return __builtin_shufflevector(v, v, 0, 1, 0, 1); };
+    Wide w[FarSegmentRule::Integrand::weight_count];
+    for (std::size_t d = 0; d < FarSegmentRule::Integrand::weight_count; ++d) w[d] = twice(segment.w[d]);
+    const far_rule::NodeSegmentOf<4> wide{twice(segment.pa_x),      twice(segment.pa_y), twice(segment.pa_z),
+                                          twice(segment.ab_x),      twice(segment.ab_y), twice(segment.ab_z),
+                                          twice(segment.sharpness), twice(segment.c0),   twice(segment.c1),
+                                          w,                        segment.weight_degree};
+    Wide f{}, g_x{}, g_y{}, g_z{};
+    for (std::size_t even = 0; even < std::size_t(n); even += 2) {
+      const std::size_t odd = even + 1;
+      // The even node's t (and g) in lanes 0, 1, the odd node's in 2, 3.
+      const Wide t = __builtin_shufflevector(_mm_set1_pd(rule.t[even]), _mm_set1_pd(rule.t[odd]), 0, 1, 2, 3);
+      const Wide g = __builtin_shufflevector(_mm_set1_pd(rule.g[even]), _mm_set1_pd(rule.g[odd]), 0, 1, 2, 3);
+      add_node<I, Gradient, Scalis>(t, g, wide, f, g_x, g_y, g_z);
+    }
+    const auto even = [](Wide v) -> __m128d { return __builtin_shufflevector(v, v, 0, 1); };
+    const auto odd = [](Wide v) -> __m128d { return __builtin_shufflevector(v, v, 2, 3); };
+    sums = {even(f), odd(f), even(g_x), even(g_y), even(g_z), odd(g_x), odd(g_y), odd(g_z)};
+  }
+  return sums;
+}
+
+/// Whether this processor (and the system, which must save the ymm
+/// registers) runs AVX: the build targets plain x86-64, so terms_impl_avx
+/// is taken only where it can run.
+bool has_avx() {
+  static const bool avx = __builtin_cpu_supports("avx");
+  return avx;
+}
+
+/// 4 lanes only where the processor runs them; anything else is SSE2's 2.
+bool on_avx(int lanes) { return lanes == 4 && has_avx(); }
 
 }  // namespace
 }  // namespace far_rule_batch
@@ -84,12 +142,15 @@ std::optional<FarRuleBatch> FarRuleBatch::make(std::span<const FarSegmentRule> r
   return batch;
 }
 
-template <int I, bool Scalis, bool Ball>
-void FarRuleBatch::choose_impl(const Vec3& p, double radius, double tolerance, std::uint8_t* nodes) const {
+template <int I, bool Scalis, bool Ball, int Lanes>
+[[gnu::always_inline]] inline void FarRuleBatch::choose_lanes(const Vec3& p, double radius, double tolerance,
+                                                              std::uint8_t* nodes) const {
   using namespace far_rule_batch;
+  using far_rule::lanes_of;
+  using far_rule::lanes_sqrt;
   const std::size_t count = rules_.size();
-  // Per segment, two at a time: Q at the ends, S (at P, or its least and
-  // largest over the ball) and the lower bound, added to f̲ in order.
+  // Per segment, `Lanes` at a time: Q at the ends, S (at P, or its least
+  // and largest over the ball) and the lower bound, added to f̲ in order.
   Scratch least(count), largest(Ball ? count : 0);
   // The columns' addresses in locals: the stores below (bytes) could alias
   // any member as far as the compiler knows, which would reload them.
@@ -101,47 +162,60 @@ void FarRuleBatch::choose_impl(const Vec3& p, double radius, double tolerance, s
                *gradient_factor = gradient_factor_.data();
   const std::uint8_t* weight_varies = weight_varies_.data();
   const FarSegmentRule* rules = rules_.data();
-  const __m128d p_x = _mm_set1_pd(p.x()), p_y = _mm_set1_pd(p.y()), p_z = _mm_set1_pd(p.z());
-  const __m128d twice_radius = _mm_set1_pd(2 * radius), ball_radius = _mm_set1_pd(radius);
   double lower = 0;
-  // Segments k and k + 1 (`load` reads a column's pair), or the last one
-  // alone (`load` repeats it in both lanes; lane 1 then unused).
-  const auto two = [&](std::size_t k, bool both, auto load) {
-    const __m128d pa_x = _mm_sub_pd(p_x, load(a_x)), pa_y = _mm_sub_pd(p_y, load(a_y)),
-                  pa_z = _mm_sub_pd(p_z, load(a_z));
-    const __m128d pb_x = _mm_sub_pd(pa_x, load(ab_x)), pb_y = _mm_sub_pd(pa_y, load(ab_y)),
-                  pb_z = _mm_sub_pd(pa_z, load(ab_z));
-    const __m128d q_a = _mm_add_pd(squared_norm(pa_x, pa_y, pa_z), load(offset_a));
-    const __m128d q_b = _mm_add_pd(squared_norm(pb_x, pb_y, pb_z), load(offset_b));
-    const __m128d to_centroid = squared_norm(_mm_sub_pd(p_x, load(centroid_x)), _mm_sub_pd(p_y, load(centroid_y)),
-                                             _mm_sub_pd(p_z, load(centroid_z)));
-    __m128d mean_square;
+  // Segments k … k + used − 1, one per lane of the vector `load` returns (a
+  // column's values from k on, or segment k in every lane when used = 1):
+  // each lane does the same operations in the same order whatever the
+  // vector's width (2 or 4), hence the same bits.
+  const auto segments = [&](std::size_t k, std::size_t used, auto load) __attribute__((always_inline)) {
+    using V = decltype(load(a_x));
+    const V pa_x = lanes_of<V>(p.x()) - load(a_x), pa_y = lanes_of<V>(p.y()) - load(a_y),
+            pa_z = lanes_of<V>(p.z()) - load(a_z);
+    const V pb_x = pa_x - load(ab_x), pb_y = pa_y - load(ab_y), pb_z = pa_z - load(ab_z);
+    // (x² + y²) + z², as Eigen's squaredNorm of a Vec3 adds them.
+    const V q_a = ((pa_x * pa_x + pa_y * pa_y) + pa_z * pa_z) + load(offset_a);
+    const V q_b = ((pb_x * pb_x + pb_y * pb_y) + pb_z * pb_z) + load(offset_b);
+    const V c_x = lanes_of<V>(p.x()) - load(centroid_x), c_y = lanes_of<V>(p.y()) - load(centroid_y),
+            c_z = lanes_of<V>(p.z()) - load(centroid_z);
+    const V to_centroid = (c_x * c_x + c_y * c_y) + c_z * c_z;
+    V mean_square;
     if constexpr (Ball) {  // ball_mean_square
-      const __m128d far = _mm_add_pd(_mm_sqrt_pd(to_centroid), ball_radius);
-      mean_square = _mm_add_pd(_mm_mul_pd(far, far), load(spread));
+      const V far = lanes_sqrt(to_centroid) + lanes_of<V>(radius);
+      mean_square = far * far + load(spread);
     } else {  // mean_square
-      mean_square = _mm_add_pd(to_centroid, load(spread));
+      mean_square = to_centroid + load(spread);
     }
-    const __m128d term = _mm_mul_pd(load(lower_front), lanes_half_power<I>(_mm_div_pd(load(q_unit), mean_square)));
-    const __m128d roots = _mm_add_pd(_mm_sqrt_pd(q_a), _mm_sqrt_pd(q_b));
-    const __m128d scale = load(two_over_length);
-    __m128d s_least = _mm_mul_pd(roots, scale);
+    const V term = load(lower_front) * far_rule::lanes_half_power<I>(load(q_unit) / mean_square);
+    const V roots = lanes_sqrt(q_a) + lanes_sqrt(q_b);
+    const V scale = load(two_over_length);
+    V s_least = roots * scale, s_largest{};
     if constexpr (Ball) {  // ball_nodes: S over the ball
-      s_least = _mm_mul_pd(_mm_sub_pd(roots, twice_radius), scale);
-      const __m128d s_largest = _mm_mul_pd(_mm_add_pd(roots, twice_radius), scale);
-      largest[k] = low(s_largest);
-      if (both) largest[k + 1] = high(s_largest);
+      s_least = (roots - lanes_of<V>(2 * radius)) * scale;
+      s_largest = (roots + lanes_of<V>(2 * radius)) * scale;
     }
-    least[k] = low(s_least);
-    lower += low(term);
-    if (both) {
-      least[k + 1] = high(s_least);
-      lower += high(term);
+    for (std::size_t lane = 0; lane < used; ++lane) {
+      if constexpr (Ball) largest[k + lane] = s_largest[lane];
+      least[k + lane] = s_least[lane];
+      lower += term[lane];
     }
   };
   std::size_t k = 0;
-  for (; k + 1 < count; k += 2) two(k, true, [k](const double* column) { return _mm_loadu_pd(column + k); });
-  if (k < count) two(k, false, [k](const double* column) { return _mm_set1_pd(column[k]); });
+  if constexpr (Lanes == 4) {
+    using Wide = far_rule::LaneVector<4>::type;
+    for (; k + 3 < count; k += 4) {
+      segments(k, 4, [k](const double* column) __attribute__((always_inline)) {
+        Wide v;
+        std::memcpy(&v, column + k, sizeof v);
+        return v;
+      });
+    }
+  }
+  for (; k + 1 < count; k += 2) {
+    segments(k, 2, [k](const double* column) __attribute__((always_inline)) { return _mm_loadu_pd(column + k); });
+  }
+  if (k < count) {
+    segments(k, 1, [k](const double* column) __attribute__((always_inline)) { return _mm_set1_pd(column[k]); });
+  }
   const double budget = tolerance * lower / double(count);
   if (!(budget > 0.0)) {
     std::fill(nodes, nodes + count, std::uint8_t(0));
@@ -165,10 +239,21 @@ void FarRuleBatch::choose_impl(const Vec3& p, double radius, double tolerance, s
   }
 }
 
-template <int I, bool Scalis, bool Gradient>
-void FarRuleBatch::terms_impl(const Vec3& p, std::size_t first, const std::uint8_t* nodes, Terms& out) const {
+template <int I, bool Scalis, bool Ball>
+void FarRuleBatch::choose_impl(const Vec3& p, double radius, double tolerance, std::uint8_t* nodes) const {
+  choose_lanes<I, Scalis, Ball, 2>(p, radius, tolerance, nodes);
+}
+
+template <int I, bool Scalis, bool Ball>
+[[gnu::target("avx")]] void FarRuleBatch::choose_impl_avx(const Vec3& p, double radius, double tolerance,
+                                                          std::uint8_t* nodes) const {
+  choose_lanes<I, Scalis, Ball, 4>(p, radius, tolerance, nodes);
+}
+
+template <int I, bool Scalis, bool Gradient, int Lanes>
+[[gnu::always_inline]] inline void FarRuleBatch::terms_lanes(const Vec3& p, std::size_t first,
+                                                             const std::uint8_t* nodes, Terms& out) const {
   using namespace far_rule_batch;
-  using detail::far_rule::add_node;
   using detail::far_rule::NodeSegment;
   const std::size_t size = std::min(chunk, rules_.size() - first);
   out.size = size;
@@ -229,16 +314,8 @@ void FarRuleBatch::terms_impl(const Vec3& p, std::size_t first, const std::uint8
         for (int d = 0; d <= weight_degree; ++d) w[std::size_t(d)] = pair(w_columns[std::size_t(d)], k0, k1);
       }
       // Each rule's even and odd nodes summed apart (the lanes of sum_nodes).
-      __m128d f_even = _mm_setzero_pd(), f_odd = f_even;
-      __m128d g_x_even = f_even, g_y_even = f_even, g_z_even = f_even, g_x_odd = f_even, g_y_odd = f_even,
-              g_z_odd = f_even;
-      for (int node = 0; node < n; node += 2) {  // n even
-        const std::size_t even = std::size_t(node), odd = even + 1;
-        add_node<I, Gradient, Scalis>(_mm_set1_pd(rule.t[even]), _mm_set1_pd(rule.g[even]), segment, f_even, g_x_even,
-                                      g_y_even, g_z_even);
-        add_node<I, Gradient, Scalis>(_mm_set1_pd(rule.t[odd]), _mm_set1_pd(rule.g[odd]), segment, f_odd, g_x_odd,
-                                      g_y_odd, g_z_odd);
-      }
+      const NodeLaneSums sums = sum_nodes<I, Gradient, Scalis, Lanes>(rule, n, segment);
+      const auto [f_even, f_odd, g_x_even, g_y_even, g_z_even, g_x_odd, g_y_odd, g_z_odd] = sums;
       // FarSegmentRule::evaluate_with, per lane.
       const __m128d front = pair(front_at, k0, k1);
       const __m128d value = _mm_mul_pd(front, _mm_add_pd(f_even, f_odd));
@@ -264,6 +341,17 @@ void FarRuleBatch::terms_impl(const Vec3& p, std::size_t first, const std::uint8
   }
 }
 
+template <int I, bool Scalis, bool Gradient>
+void FarRuleBatch::terms_impl(const Vec3& p, std::size_t first, const std::uint8_t* nodes, Terms& out) const {
+  terms_lanes<I, Scalis, Gradient, 2>(p, first, nodes, out);
+}
+
+template <int I, bool Scalis, bool Gradient>
+[[gnu::target("avx")]] void FarRuleBatch::terms_impl_avx(const Vec3& p, std::size_t first, const std::uint8_t* nodes,
+                                                         Terms& out) const {
+  terms_lanes<I, Scalis, Gradient, 4>(p, first, nodes, out);
+}
+
 namespace {
 
 using ChooseImpl = void (FarRuleBatch::*)(const Vec3&, double, double, std::uint8_t*) const;
@@ -273,37 +361,61 @@ using TermsImpl = void (FarRuleBatch::*)(const Vec3&, std::size_t, const std::ui
 
 // The passes' instantiations, per kind at [degree] (classical 1–16, SCALIS
 // 1–10: FarSegmentRule's degrees).
-template <bool Scalis, bool Ball, int... I>
+template <bool Scalis, bool Ball, bool Avx, int... I>
 constexpr auto FarRuleBatch::choose_table(std::integer_sequence<int, I...>) {
-  return std::array<ChooseImpl, sizeof...(I) + 1>{nullptr, &FarRuleBatch::choose_impl<I + 1, Scalis, Ball>...};
+  if constexpr (Avx) {
+    return std::array<ChooseImpl, sizeof...(I) + 1>{nullptr, &FarRuleBatch::choose_impl_avx<I + 1, Scalis, Ball>...};
+  } else {
+    return std::array<ChooseImpl, sizeof...(I) + 1>{nullptr, &FarRuleBatch::choose_impl<I + 1, Scalis, Ball>...};
+  }
 }
-template <bool Scalis, bool Gradient, int... I>
+template <bool Scalis, bool Gradient, bool Avx, int... I>
 constexpr auto FarRuleBatch::terms_table(std::integer_sequence<int, I...>) {
-  return std::array<TermsImpl, sizeof...(I) + 1>{nullptr, &FarRuleBatch::terms_impl<I + 1, Scalis, Gradient>...};
+  if constexpr (Avx) {
+    return std::array<TermsImpl, sizeof...(I) + 1>{nullptr, &FarRuleBatch::terms_impl_avx<I + 1, Scalis, Gradient>...};
+  } else {
+    return std::array<TermsImpl, sizeof...(I) + 1>{nullptr, &FarRuleBatch::terms_impl<I + 1, Scalis, Gradient>...};
+  }
 }
 
-void FarRuleBatch::choose(const Vec3& p, double tolerance, std::uint8_t* nodes) const {
-  static constexpr auto classical = choose_table<false, false>(std::make_integer_sequence<int, 16>{});
-  static constexpr auto scalis = choose_table<true, false>(std::make_integer_sequence<int, 10>{});
-  (this->*(scalis_ ? scalis[std::size_t(degree_)] : classical[std::size_t(degree_)]))(p, 0.0, tolerance, nodes);
+int FarRuleBatch::widest_lanes() { return far_rule_batch::has_avx() ? 4 : 2; }
+
+template <bool Scalis, bool Ball, int Degrees>
+constexpr auto FarRuleBatch::choose_tables() {
+  constexpr auto degrees = std::make_integer_sequence<int, Degrees>{};
+  return std::array{choose_table<Scalis, Ball, false>(degrees), choose_table<Scalis, Ball, true>(degrees)};
+}
+template <bool Scalis, int Degrees>
+constexpr auto FarRuleBatch::terms_tables() {
+  constexpr auto degrees = std::make_integer_sequence<int, Degrees>{};
+  return std::array{std::array{terms_table<Scalis, false, false>(degrees), terms_table<Scalis, true, false>(degrees)},
+                    std::array{terms_table<Scalis, false, true>(degrees), terms_table<Scalis, true, true>(degrees)}};
 }
 
-void FarRuleBatch::choose_near(const Vec3& centre, double radius, double tolerance, std::uint8_t* nodes) const {
-  static constexpr auto classical = choose_table<false, true>(std::make_integer_sequence<int, 16>{});
-  static constexpr auto scalis = choose_table<true, true>(std::make_integer_sequence<int, 10>{});
-  (this->*(scalis_ ? scalis[std::size_t(degree_)] : classical[std::size_t(degree_)]))(centre, radius, tolerance,
-                                                                                        nodes);
+// The tables below: [AVX] or [AVX][∇f], then [degree] (classical 1–16,
+// SCALIS 1–10: FarSegmentRule's degrees).
+void FarRuleBatch::choose(const Vec3& p, double tolerance, std::uint8_t* nodes, int lanes) const {
+  static constexpr auto classical = choose_tables<false, false, 16>();
+  static constexpr auto scalis = choose_tables<true, false, 10>();
+  const std::size_t avx = far_rule_batch::on_avx(lanes) ? 1 : 0, at = std::size_t(degree_);
+  (this->*(scalis_ ? scalis[avx][at] : classical[avx][at]))(p, 0.0, tolerance, nodes);
 }
 
-void FarRuleBatch::terms(const Vec3& p, std::size_t first, const std::uint8_t* nodes, bool gradient,
-                         Terms& out) const {
-  static constexpr auto classical_values = terms_table<false, false>(std::make_integer_sequence<int, 16>{});
-  static constexpr auto classical_both = terms_table<false, true>(std::make_integer_sequence<int, 16>{});
-  static constexpr auto scalis_values = terms_table<true, false>(std::make_integer_sequence<int, 10>{});
-  static constexpr auto scalis_both = terms_table<true, true>(std::make_integer_sequence<int, 10>{});
+void FarRuleBatch::choose_near(const Vec3& centre, double radius, double tolerance, std::uint8_t* nodes,
+                               int lanes) const {
+  static constexpr auto classical = choose_tables<false, true, 16>();
+  static constexpr auto scalis = choose_tables<true, true, 10>();
+  const std::size_t avx = far_rule_batch::on_avx(lanes) ? 1 : 0, at = std::size_t(degree_);
+  (this->*(scalis_ ? scalis[avx][at] : classical[avx][at]))(centre, radius, tolerance, nodes);
+}
+
+void FarRuleBatch::terms(const Vec3& p, std::size_t first, const std::uint8_t* nodes, bool gradient, Terms& out,
+                         int lanes) const {
+  static constexpr auto classical = terms_tables<false, 16>();
+  static constexpr auto scalis = terms_tables<true, 10>();
+  const std::size_t avx = far_rule_batch::on_avx(lanes) ? 1 : 0, with_gradient = gradient ? 1 : 0;
   const std::size_t at = std::size_t(degree_);
-  const TermsImpl impl = scalis_ ? (gradient ? scalis_both[at] : scalis_values[at])
-                                 : (gradient ? classical_both[at] : classical_values[at]);
+  const TermsImpl impl = scalis_ ? scalis[avx][with_gradient][at] : classical[avx][with_gradient][at];
   (this->*impl)(p, first, nodes, out);
 }
 
