@@ -270,8 +270,9 @@ def mesh_ant_section(res, md, goals):
     rate = triangles[0] / seconds
     md.append("## 9. `skelconv mesh` on Zanni's ant\n")
     md.append("`skelconv mesh papers_figures/skeletons/zanni_table1_ant.json --size 0.04 --method grid` (24 SCALIS "
-              "Cauchy 4 segments, the paper's triangle count), medians of 3 runs; triangles/s on the CPU seconds "
-              "(user + system, OpenVDB's threads included) when measured, else on the wall time. Paper: Zanni et "
+              "Cauchy 4 segments, the paper's triangle count), pinned to one core (`taskset -c 0`), medians of 3 "
+              "runs; triangles/s on the CPU seconds (user + system, OpenVDB's worker and the field's threads "
+              "sharing that core) when measured, else on the wall time. Paper: Zanni et "
               f"al. 2013 Table 1, 94,953 triangles in 3.58 s ({PAPER_ANT_RATE:,.0f}/s, 2008 Core 2 Duo).\n")
     md.append(table(["triangles", "wall s", "CPU s", "field s (wall)", "evaluations", "evaluations/triangle",
                      "µs/evaluation", "triangles/s", "× paper"],

@@ -81,11 +81,13 @@ step "4/6 closed forms against GSL's adaptive QAG (61-point rule), 0.1-3 |AB| (~
 step "4b/6 public paths against the generated function; the mesher on Zanni's ant (~2 min)"
 "$bin/skelconv_bench_public_path" --benchmark_min_time="$min_time" --benchmark_repetitions="$repetitions" \
   --benchmark_report_aggregates_only=true --benchmark_out_format=json --benchmark_out="$results/public_path.json"
-# Zanni Table 1's ant at its triangle count (--size 0.04: ~95k triangles), one
-# core for the field, 3 runs (summarize.py takes the median).
-# CPU seconds as well (/usr/bin/time): on a shared machine they mean more.
+# Zanni Table 1's ant at its triangle count (--size 0.04: ~95k triangles), 3
+# runs (summarize.py takes the median), pinned to one core as the goal states
+# (unpinned, OpenVDB's worker and the field's threads add the second core's
+# time to the CPU seconds). CPU seconds as well (/usr/bin/time): on a shared
+# machine they mean more.
 for run in 1 2 3; do
-  /usr/bin/time -f 'cpu_seconds: %U %S' "$build/src/skelconv" mesh papers_figures/skeletons/zanni_table1_ant.json \
+  /usr/bin/time -f 'cpu_seconds: %U %S' taskset -c 0 "$build/src/skelconv" mesh papers_figures/skeletons/zanni_table1_ant.json \
     --size 0.04 --method grid -o "$scratch/ant.ply" --quiet 2>&1
 done > "$results/mesh_ant.txt"
 
