@@ -130,6 +130,16 @@ struct MedialFitOptions {
   /// centres' distance (medial_slope.hpp: no ball inside its neighbour's,
   /// as on a medial axis); each step's radii are lowered to keep it.
   double max_radius_slope = 1.0;
+  /// Where the bound lowers radii after a step, the step is solved again
+  /// with each radius it lowered tied to the neighbour that bounded it (its
+  /// change that neighbour's plus max_radius_slope × the change of their
+  /// distance, to first order), at most this many times an attempt, the
+  /// ties kept for the round's more damped attempts (src/reconstruct/
+  /// medial_step.hpp): otherwise the bound cuts back, in proportion to the
+  /// step, what the step's linear model counted on, and damping cannot make
+  /// such a step descend (docs/reconstruction_medial.md, "The fit").
+  /// 0: the bound after the step alone.
+  int bound_tie_passes = 3;
   /// Newton steps along the gradient after the first, for each point's
   /// distance, in both stages (`skeletonize --medial-newton-steps`): where
   /// the field saturates (deep inside a crease the blend filled) the
