@@ -191,9 +191,10 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                       "truly (docs/reconstruction_medial.md, \"The fit\")")
       ->check(CLI::Range(0, 3));
   command->add_option("--medial-bound-ties", options.medial.fit.bound_tie_passes,
-                      fmt::format("How many times at most a step of the medial fit is solved again with the radii the "
-                                  "radius bound lowered tied to the neighbour that bounded them (default {}; 0: the "
-                                  "bound applied after the step alone; docs/reconstruction_medial.md, \"The fit\")",
+                      fmt::format("Where no damping makes a round of the medial fit descend, the round is tried again with "
+                                  "the radii the radius bound lowered tied to the neighbour that bounded them, each "
+                                  "step solved again at most this many times (default {}; 0: never; "
+                                  "docs/reconstruction_medial.md, \"The fit\")",
                                   options.medial.fit.bound_tie_passes))
       ->check(CLI::Range(0, 10));
   command->add_flag("--medial-thin-walls,!--no-medial-thin-walls", options.medial.thin_walls,

@@ -491,41 +491,60 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
     const NormalEquations equations =
         normal_equations(points.all, now, jacobian(points, now, o.fit_centres, o.triangle_radius),
                          stage.weights(now), Eigen::Index(per_sphere * mesh.spheres.size()));
-    bool better = false;
-    // The radii the bound lowered after a step, each tied to the neighbour
-    // that bounded it, and the step solved again (medial_step.hpp), at most
+    // One attempt after another, λ × 10 each, until a step lowers the
+    // objective (and keeps the topology, under a guard). With `tie`, the
+    // radii the bound lowered after a step are each tied to the neighbour
+    // that bounded it and the step solved again (medial_step.hpp), at most
     // bound_tie_passes times an attempt; the ties carry over to the round's
     // more damped attempts.
-    std::vector<std::size_t> tied_to(mesh.spheres.size());
-    for (std::size_t i = 0; i < tied_to.size(); ++i) tied_to[i] = i;
+    bool better = false, spent = false;
     std::size_t ties = 0;
     const std::vector<std::uint8_t> every(mesh.spheres.size(), 1);
-    for (int attempt = 0; attempt < o.damping_attempts && !better; ++attempt, lambda *= 10.0) {
-      std::vector<double> step;
-      MedialMesh trial;
-      for (int pass = 0;; ++pass) {
-        step = joint_step(mesh, equations, lambda, o.min_radius, start, guard.held, o.max_radius_slope,
-                          ties > 0 ? &tied_to : nullptr);
-        std::vector<std::size_t> bounded_by;
-        trial = stepped(mesh, step, every, o.max_radius_slope, clearance, &bounded_by);
-        if (pass >= o.bound_tie_passes) break;
-        const std::size_t made = skelconv::detail::tie_lowered_radii(tied_to, bounded_by, guard.held);
-        if (made == 0) break;
-        ties += made;
-      }
-      Evaluation next = evaluate(trial, points, field_of, stage.newton_steps);
-      const double next_value = stage.objective(next);
-      if (next_value < value && next.rms <= stage.rms_limit) {
-        if (guard.error) {
-          if (guard.checks_left-- <= 0) {
-            if (progress) progress(fmt::format("medial fit, {}, round {}: topology tests spent; stopped", stage.name, round));
-            return;
-          }
-          if (guard.error(trial) > guard.allowed) continue;
+    const auto attempts = [&](bool tie) {
+      std::vector<std::size_t> tied_to(mesh.spheres.size());
+      for (std::size_t i = 0; i < tied_to.size(); ++i) tied_to[i] = i;
+      for (int attempt = 0; attempt < o.damping_attempts && !better; ++attempt, lambda *= 10.0) {
+        std::vector<double> step;
+        MedialMesh trial;
+        for (int pass = 0;; ++pass) {
+          bool tied = false;
+          for (std::size_t i = 0; i < tied_to.size() && !tied; ++i) tied = tied_to[i] != i;
+          step = joint_step(mesh, equations, lambda, o.min_radius, start, guard.held, o.max_radius_slope,
+                            tied ? &tied_to : nullptr);
+          std::vector<std::size_t> bounded_by;
+          trial = stepped(mesh, step, every, o.max_radius_slope, clearance, &bounded_by);
+          if (!tie || pass >= o.bound_tie_passes) break;
+          const std::size_t made = skelconv::detail::tie_lowered_radii(tied_to, bounded_by, guard.held);
+          if (made == 0) break;
+          ties += made;
         }
-        value = next_value, better = true;
-        mesh = std::move(trial), now = std::move(next);
+        Evaluation next = evaluate(trial, points, field_of, stage.newton_steps);
+        const double next_value = stage.objective(next);
+        if (next_value < value && next.rms <= stage.rms_limit) {
+          if (guard.error) {
+            if (guard.checks_left-- <= 0) {
+              spent = true;
+              return;
+            }
+            if (guard.error(trial) > guard.allowed) continue;
+          }
+          value = next_value, better = true;
+          mesh = std::move(trial), now = std::move(next);
+        }
       }
+    };
+    // The step as solved, the bound applied after it, first; where no
+    // damping makes it descend, the bound may be what turns it uphill, and
+    // the round is tried again, from the same damping, with the ties.
+    const double round_damping = lambda;
+    attempts(false);
+    if (!better && !spent && o.bound_tie_passes > 0) {
+      lambda = round_damping;
+      attempts(true);
+    }
+    if (spent) {
+      if (progress) progress(fmt::format("medial fit, {}, round {}: topology tests spent; stopped", stage.name, round));
+      return;
     }
     if (!better) {
       if (progress) progress(fmt::format("medial fit, {}, round {}: no step lowers it; stopped", stage.name, round));

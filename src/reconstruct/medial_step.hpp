@@ -11,11 +11,15 @@
 // so a round can find no damping that lowers the objective (homer's Newton
 // phase stopped so at its round 5: the damped step lowered the objective
 // by 5.3e-9 without the bound and raised it by 4.9e-9 with it, 38 radii
-// lowered). So the step is solved again with each radius the bound lowered
-// tied to the neighbour that bounded it: its change is no unknown of its
-// own but that neighbour's radius change plus slope × the change of their
-// centres' distance, linearised (the edge's slack stays what it was), and
-// the linear model sees what the bound will do.
+// lowered). So where no damping makes a round's step descend, the fit
+// tries the round again with each radius the bound lowered tied to the
+// neighbour that bounded it: its change is no unknown of its own but that
+// neighbour's radius change plus slope × the change of their centres'
+// distance, linearised (the edge's slack stays what it was), and the
+// linear model sees what the bound will do. A tie is an equality where the
+// bound is an inequality (a tied radius cannot leave the bound inward in
+// that round): tying on every round slowed the fit where the bound did not
+// stop it (MedialFitOptions::bound_tie_passes).
 #pragma once
 
 #include <cstddef>
