@@ -27,6 +27,7 @@
 #include "skelconv/reconstruct/reconstruct.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
 #include "src/reconstruct/fill_cavities.hpp"
+#include "src/reconstruct/medial_step.hpp"
 #include "src/reconstruct/tube_ends.hpp"
 #include "src/reconstruct/unreached_tips.hpp"
 
@@ -953,6 +954,102 @@ TEST(MedialSlope, TheSmallerBallGrowsWithinTheInputFirst) {
   const MedialMesh within = m;
   limit_radius_slope(m, 1.0, room);
   EXPECT_EQ(m.spheres, within.spheres);
+}
+
+// --- The step with the radius bound's active edges tied (medial_step.hpp).
+
+// Two spheres 1 apart on x, radii 1 and 2: their edge is at the bound
+// (slope 1). A quadratic model of the objective in the 8 unknowns (x0 y0
+// z0 r0 x1 y1 z1 r1), Q(Δ) = ½ Σ Δ_i² over r0, r1 (and x1 where it moves)
+// + 0.1 Δr0 − 0.3 Δr1: the fit wants r0 down and r1 up, past the bound.
+// Untied, the step is the unconstrained minimiser (r0 −0.1, r1 +0.3) and
+// the bound then takes r1 to r0 + 1, Δr1 = −0.1: Q = ½(0.01 + 0.01) − 0.01
+// + 0.03 = +0.03, uphill; at any damping λ the step is −g / (1 + λ(1 + μ))
+// and Q after the bound is a² + 0.2a, a its length, still uphill. Tied
+// (Δr1 = Δr0 + Δx1 − Δx0), by hand:
+//  - the centres held: Q(φ) = φ² − 0.2 φ, minimised at φ = 0.1 (the
+//    feasible minimiser of Q on r1 ≤ r0 + 1, where the bound is active);
+//    damped with λ = 1, μ = 1 (diagonal 2 + 1): 5 φ = 0.2, φ = 0.04,
+//    Q = 2 × 0.0016 / 2 − 0.008 = −0.0064;
+//  - x1 free too, λ = 0: ZᵀHZ over (r0, x1) = [[2, 1], [1, 2]], Zᵀg =
+//    (−0.2, −0.3): Δr0 = 1/30, Δx1 = 4/30, Δr1 = 5/30, and r1 is still at
+//    the bound after the step (the distance grows by Δx1 exactly).
+TEST(MedialStep, ARadiusTiedAtTheBoundTurnsAnUphillStepDownhill) {
+  MedialMesh mesh;
+  mesh.spheres = {Vec4(0, 0, 0, 1.0), Vec4(1, 0, 0, 2.0)};
+  mesh.edges = {{0, 1}};
+  const auto equations = [](bool x1_moves) {
+    detail::NormalEquations e;
+    std::vector<Eigen::Triplet<double>> entries = {{3, 3, 1.0}, {7, 7, 1.0}};
+    if (x1_moves) entries.emplace_back(4, 4, 1.0);
+    e.normal.resize(8, 8);
+    e.normal.setFromTriplets(entries.begin(), entries.end());
+    e.gradient = Eigen::VectorXd::Zero(8);
+    e.gradient[3] = 0.1, e.gradient[7] = -0.3;
+    e.diagonal = e.normal.diagonal();
+    return e;
+  };
+  const auto q = [](const std::array<double, 3>& d) {  // (Δr0, Δr1, Δx1)
+    return 0.5 * (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) + 0.1 * d[0] - 0.3 * d[1];
+  };
+  // The step taken and bounded as the fit does; its (Δr0, Δr1, Δx1) and
+  // which sphere bounded each radius.
+  const auto take = [&](const Eigen::VectorXd& step, std::vector<std::size_t>* bounded_by) {
+    MedialMesh m = mesh;
+    for (std::size_t i = 0; i < 2; ++i)
+      for (Eigen::Index c = 0; c < 4; ++c) m.spheres[i][c] += step[Eigen::Index(4 * i) + c];
+    limit_radius_slope(m, 1.0, {}, bounded_by);
+    return std::array<double, 3>{m.spheres[0].w() - 1.0, m.spheres[1].w() - 2.0, m.spheres[1].x() - 1.0};
+  };
+  // The centres held: the untied step goes uphill at every damping; the
+  // bound says sphere 0 bounded sphere 1.
+  const std::vector<std::uint8_t> centres_held = {1, 1, 1, 0, 1, 1, 1, 0};
+  detail::NormalEquations held = equations(false);
+  held.floor = 1.0;
+  std::vector<std::size_t> bounded_by;
+  for (const double lambda : {0.0, 1.0, 100.0}) {
+    const std::array<double, 3> untied = take(detail::damped_solution(held, lambda, centres_held), &bounded_by);
+    EXPECT_GT(q(untied), 0.0) << "λ " << lambda;
+  }
+  EXPECT_EQ(bounded_by, (std::vector<std::size_t>{0, 0}));
+  std::vector<std::size_t> tied_to = {0, 1};
+  EXPECT_EQ(detail::tie_lowered_radii(tied_to, bounded_by, {}), 1u);
+  EXPECT_EQ(tied_to, (std::vector<std::size_t>{0, 0}));
+  const Eigen::SparseMatrix<double> z = detail::radius_ties(mesh, tied_to, 1.0, centres_held);
+  const std::array<double, 3> tied = take(detail::damped_solution(held, 1.0, centres_held, &z), &bounded_by);
+  EXPECT_NEAR(tied[0], 0.04, 1e-12);
+  EXPECT_NEAR(tied[1], 0.04, 1e-12);
+  EXPECT_NEAR(q(tied), -0.0064, 1e-12);
+  // x1 free: the tie follows the centres' distance.
+  const std::vector<std::uint8_t> x1_free = {1, 1, 1, 0, 0, 1, 1, 0};
+  const Eigen::SparseMatrix<double> z1 = detail::radius_ties(mesh, tied_to, 1.0, x1_free);
+  EXPECT_EQ(z1.coeff(7, 3), 1.0);
+  EXPECT_EQ(z1.coeff(7, 4), 1.0);
+  EXPECT_EQ(z1.coeff(7, 0), 0.0) << "a held centre adds nothing";
+  EXPECT_EQ(z1.col(7).nonZeros(), 0) << "a tied radius is no unknown of its own";
+  const detail::NormalEquations moving = equations(true);
+  EXPECT_GT(q(take(detail::damped_solution(moving, 0.0, x1_free), nullptr)), 0.0);
+  const std::array<double, 3> along = take(detail::damped_solution(moving, 0.0, x1_free, &z1), &bounded_by);
+  EXPECT_NEAR(along[0], 1.0 / 30.0, 1e-12);
+  EXPECT_NEAR(along[2], 4.0 / 30.0, 1e-12);
+  EXPECT_NEAR(along[1], 5.0 / 30.0, 1e-12);
+  EXPECT_LT(q(along), 0.0);
+  // Half the slope: the tie's centre coefficients halve.
+  const Eigen::SparseMatrix<double> half = detail::radius_ties(mesh, tied_to, 0.5, {});
+  EXPECT_EQ(half.coeff(7, 4), 0.5);
+  EXPECT_EQ(half.coeff(7, 0), -0.5);
+}
+
+// Ties never close a loop: b bounded by a, a by b (as two passes may
+// report) ties b to a and leaves a free; a held sphere is never tied.
+TEST(MedialStep, TiesFormNoLoopAndSpareHeldSpheres) {
+  std::vector<std::size_t> tied_to = {0, 1, 2};
+  EXPECT_EQ(detail::tie_lowered_radii(tied_to, {0, 0, 2}, {}), 1u);
+  EXPECT_EQ(detail::tie_lowered_radii(tied_to, {1, 1, 2}, {}), 0u);
+  EXPECT_EQ(tied_to, (std::vector<std::size_t>{0, 0, 2}));
+  EXPECT_EQ(detail::tie_lowered_radii(tied_to, {0, 0, 1}, {0, 0, 1}), 0u);
+  EXPECT_EQ(detail::tie_lowered_radii(tied_to, {0, 0, 1}, {}), 1u);
+  EXPECT_EQ(tied_to, (std::vector<std::size_t>{0, 0, 1}));
 }
 
 // A foot (a capsule of radius 0.3) with a toe (a slab 0.12 thick, its

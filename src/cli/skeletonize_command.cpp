@@ -190,6 +190,13 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                       "start (default 1, at most 3; 0: first-order distances only): 1 measures sharp edges and corners "
                       "truly (docs/reconstruction_medial.md, \"The fit\")")
       ->check(CLI::Range(0, 3));
+  command->add_option("--medial-bound-ties", options.medial.fit.bound_tie_passes,
+                      fmt::format("Where no damping makes a round of the medial fit descend, the round is tried again with "
+                                  "the radii the radius bound lowered tied to the neighbour that bounded them, each "
+                                  "step solved again at most this many times (default {}; 0: never; "
+                                  "docs/reconstruction_medial.md, \"The fit\")",
+                                  options.medial.fit.bound_tie_passes))
+      ->check(CLI::Range(0, 10));
   command->add_flag("--medial-thin-walls,!--no-medial-thin-walls", options.medial.thin_walls,
                     "The medial path samples the input again, up to 2.5 times finer, where a part of it is a thin wall "
                     "(a medial sheet under 1.5 sample spacings thick and about 6 or more across), so that the wall's "

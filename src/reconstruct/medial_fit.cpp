@@ -17,6 +17,7 @@
 #include "skelconv/reconstruct/medial_parts.hpp"
 #include "skelconv/reconstruct/medial_slope.hpp"
 #include "../detail/parallel_for.hpp"
+#include "medial_step.hpp"
 
 namespace skelconv::reconstruct {
 namespace {
@@ -168,7 +169,7 @@ Evaluation evaluate(const MedialMesh& mesh, const FitPoints& fit_points, const M
 }
 
 /// Unknowns per sphere: its centre (x, y, z) and its radius.
-constexpr std::size_t per_sphere = 4;
+constexpr std::size_t per_sphere = skelconv::detail::unknowns_per_sphere;
 
 /// The Jacobian of the points' distances δ_k in the spheres' centres and
 /// radii, sparse: ∂δ_k/∂θ = (∂f/∂θ) / |∇f|, summed over the primitives whose
@@ -258,16 +259,10 @@ Reweighting power_weights(double exponent, double scale) {
   return [exponent, scale](double delta) { return std::pow(std::abs(delta) / scale, exponent - 2.0); };
 }
 
-/// The normal equations of the Levenberg–Marquardt step of all unknowns
-/// together on Σ w ρ(δ), as reweighted least squares: JᵀWJ and JᵀWδ with W
-/// the area weights times `reweighting`. They do not depend on the damping
-/// λ, so a round builds them once for all its attempts.
-struct NormalEquations {
-  Eigen::SparseMatrix<double> normal;  ///< JᵀWJ
-  Eigen::VectorXd gradient, diagonal;  ///< JᵀWδ, diag JᵀWJ
-  double floor = 0.0;  ///< μ, a trace-relative floor that keeps an unknown no point sees at 0
-};
+using skelconv::detail::NormalEquations;
 
+/// The normal equations of the Levenberg–Marquardt step (medial_step.hpp),
+/// W the area weights times `reweighting`.
 NormalEquations normal_equations(const std::vector<WeightedPoint>& points, const Evaluation& e, const Jacobian& j,
                                  const Reweighting& reweighting, Eigen::Index n) {
   // J and the weighted residual as sparse matrices, JᵀWJ as their product:
@@ -298,26 +293,24 @@ NormalEquations normal_equations(const std::vector<WeightedPoint>& points, const
 /// above, each centre step to a length of r/2 and to end within the
 /// sphere's starting ball (`start`). The spheres `held` (one flag per
 /// sphere, or empty) do not move: their unknowns are taken out of the
-/// equations, so the others' step is the best one with them fixed.
+/// equations, so the others' step is the best one with them fixed. With
+/// `tied_to` (one entry per sphere, medial_step.hpp), each tied radius
+/// follows the radius it is tied to along their edge at the radius bound.
 std::vector<double> joint_step(const MedialMesh& mesh, const NormalEquations& equations, double lambda,
                                double min_radius, const std::vector<Vec4>& start,
-                               const std::vector<std::uint8_t>& held) {
+                               const std::vector<std::uint8_t>& held, double max_radius_slope,
+                               const std::vector<std::size_t>* tied_to = nullptr) {
   const Eigen::Index n = Eigen::Index(per_sphere * mesh.spheres.size());
-  Eigen::SparseMatrix<double> normal = equations.normal;
-  Eigen::VectorXd gradient = equations.gradient;
   const auto fixed = [&held](Eigen::Index unknown) {
     return !held.empty() && held[std::size_t(unknown) / per_sphere] != 0;
   };
-  if (!held.empty()) {
-    normal.prune([&fixed](Eigen::Index row, Eigen::Index column, double) { return !fixed(row) && !fixed(column); });
-    for (Eigen::Index i = 0; i < n; ++i)
-      if (fixed(i)) normal.coeffRef(i, i) = 1.0, gradient[i] = 0.0;
-  }
-  for (Eigen::Index i = 0; i < n; ++i)
-    if (!fixed(i)) normal.coeffRef(i, i) += lambda * (equations.diagonal[i] + equations.floor);
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
+  std::vector<std::uint8_t> fixed_unknowns;
+  if (!held.empty())
+    for (Eigen::Index i = 0; i < n; ++i) fixed_unknowns.push_back(fixed(i) ? 1 : 0);
+  std::optional<Eigen::SparseMatrix<double>> ties;
+  if (tied_to != nullptr) ties = skelconv::detail::radius_ties(mesh, *tied_to, max_radius_slope, fixed_unknowns);
   const Eigen::VectorXd solution =
-      solver.info() == Eigen::Success ? Eigen::VectorXd(solver.solve(-gradient)) : Eigen::VectorXd::Zero(n);
+      skelconv::detail::damped_solution(equations, lambda, fixed_unknowns, ties ? &*ties : nullptr);
   std::vector<double> step(std::size_t(n), 0.0);
   for (std::size_t i = 0; i < mesh.spheres.size(); ++i) {
     const double radius = mesh.spheres[i].w();
@@ -396,14 +389,15 @@ struct Guard {
 };
 
 /// `mesh` with `step` taken by the spheres `moved` (one flag per sphere)
-/// and the radius bound applied (limit_radius_slope).
+/// and the radius bound applied (limit_radius_slope; `bounded_by` as there).
 MedialMesh stepped(const MedialMesh& mesh, const std::vector<double>& step, const std::vector<std::uint8_t>& moved,
-                   double max_radius_slope, const Clearance& clearance) {
+                   double max_radius_slope, const Clearance& clearance,
+                   std::vector<std::size_t>* bounded_by = nullptr) {
   MedialMesh trial = mesh;
   for (std::size_t i = 0; i < trial.spheres.size(); ++i)
     if (moved[i])
       for (std::size_t c = 0; c < per_sphere; ++c) trial.spheres[i][Eigen::Index(c)] += step[per_sphere * i + c];
-  limit_radius_slope(trial, max_radius_slope, clearance);
+  limit_radius_slope(trial, max_radius_slope, clearance, bounded_by);
   return trial;
 }
 
@@ -497,24 +491,64 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
     const NormalEquations equations =
         normal_equations(points.all, now, jacobian(points, now, o.fit_centres, o.triangle_radius),
                          stage.weights(now), Eigen::Index(per_sphere * mesh.spheres.size()));
-    bool better = false;
-    for (int attempt = 0; attempt < o.damping_attempts && !better; ++attempt, lambda *= 10.0) {
-      const std::vector<double> step = joint_step(mesh, equations, lambda, o.min_radius, start, guard.held);
-      MedialMesh trial =
-          stepped(mesh, step, std::vector<std::uint8_t>(mesh.spheres.size(), 1), o.max_radius_slope, clearance);
-      Evaluation next = evaluate(trial, points, field_of, stage.newton_steps);
-      const double next_value = stage.objective(next);
-      if (next_value < value && next.rms <= stage.rms_limit) {
-        if (guard.error) {
-          if (guard.checks_left-- <= 0) {
-            if (progress) progress(fmt::format("medial fit, {}, round {}: topology tests spent; stopped", stage.name, round));
-            return;
-          }
-          if (guard.error(trial) > guard.allowed) continue;
+    // One attempt after another, λ × 10 each, until a step lowers the
+    // objective (and keeps the topology, under a guard). With `tie`, the
+    // radii the bound lowered after a step are each tied to the neighbour
+    // that bounded it and the step solved again (medial_step.hpp), at most
+    // bound_tie_passes times an attempt; the ties carry over to the round's
+    // more damped attempts.
+    bool better = false, spent = false;
+    std::size_t ties = 0;
+    const std::vector<std::uint8_t> every(mesh.spheres.size(), 1);
+    const auto attempts = [&](bool tie) {
+      std::vector<std::size_t> tied_to(mesh.spheres.size());
+      for (std::size_t i = 0; i < tied_to.size(); ++i) tied_to[i] = i;
+      for (int attempt = 0; attempt < o.damping_attempts && !better; ++attempt, lambda *= 10.0) {
+        std::vector<double> step;
+        MedialMesh trial;
+        for (int pass = 0;; ++pass) {
+          bool tied = false;
+          for (std::size_t i = 0; i < tied_to.size() && !tied; ++i) tied = tied_to[i] != i;
+          step = joint_step(mesh, equations, lambda, o.min_radius, start, guard.held, o.max_radius_slope,
+                            tied ? &tied_to : nullptr);
+          std::vector<std::size_t> bounded_by;
+          trial = stepped(mesh, step, every, o.max_radius_slope, clearance, &bounded_by);
+          if (!tie || pass >= o.bound_tie_passes) break;
+          const std::size_t made = skelconv::detail::tie_lowered_radii(tied_to, bounded_by, guard.held);
+          if (made == 0) break;
+          ties += made;
         }
-        value = next_value, better = true;
-        mesh = std::move(trial), now = std::move(next);
+        Evaluation next = evaluate(trial, points, field_of, stage.newton_steps);
+        const double next_value = stage.objective(next);
+        if (next_value < value && next.rms <= stage.rms_limit) {
+          if (guard.error) {
+            if (guard.checks_left-- <= 0) {
+              spent = true;
+              return;
+            }
+            if (guard.error(trial) > guard.allowed) continue;
+          }
+          value = next_value, better = true;
+          mesh = std::move(trial), now = std::move(next);
+        }
       }
+    };
+    // The step as solved, the bound applied after it, first; where no
+    // damping makes it descend, the bound may be what turns it uphill, and
+    // the round is tried again, from the same damping, with the ties. Not
+    // where each step is tested for its topology: the retry's steps spend
+    // the guard's meshings (CGAL's camel, --repair: its tested resume ran
+    // on to a result of one component, 3.23%, where stopping left two and
+    // the medial path ran again with its thin protrusion joined, 1.35%).
+    const double round_damping = lambda;
+    attempts(false);
+    if (!better && !spent && o.bound_tie_passes > 0 && !guard.error) {
+      lambda = round_damping;
+      attempts(true);
+    }
+    if (spent) {
+      if (progress) progress(fmt::format("medial fit, {}, round {}: topology tests spent; stopped", stage.name, round));
+      return;
     }
     if (!better) {
       if (progress) progress(fmt::format("medial fit, {}, round {}: no step lowers it; stopped", stage.name, round));
@@ -525,8 +559,9 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
     history.push_back(mesh.spheres);
     if (progress)
       progress(fmt::format("medial fit, {}, round {} of {}: {:.4g} (RMS distance {:.4g}, largest {:.4g}), "
-                           "damping {:.2g}",
-                           stage.name, round, stage.rounds, value, now.rms, now.largest, lambda));
+                           "damping {:.2g}{}",
+                           stage.name, round, stage.rounds, value, now.rms, now.largest, lambda,
+                           ties > 0 ? fmt::format(", {} radii tied at the radius bound", ties) : std::string()));
     if (guard.watched > 0) {
       --guard.watched;
       guard.watched_error = guard.watch(mesh), guard.watched_round = history.size() - 1;

@@ -35,9 +35,15 @@ using Entry = std::pair<double, std::size_t>;  // (radius, sphere)
 /// spheres settle in the order `first` puts their radii (std::less:
 /// smallest first), and each settled sphere i offers each neighbour j not
 /// yet settled the radius offer(r_i, i, j), which j takes where `first`
-/// puts it before j's own; j then settles in turn.
+/// puts it before j's own; j then settles in turn. `from` (if set) gets for
+/// each sphere the one whose offer it took last (itself where it took none).
 template <class First, class Offer>
-void settle(MedialMesh& mesh, const Neighbours& neighbours, First first, const Offer& offer) {
+void settle(MedialMesh& mesh, const Neighbours& neighbours, First first, const Offer& offer,
+            std::vector<std::size_t>* from = nullptr) {
+  if (from != nullptr) {
+    from->resize(mesh.spheres.size());
+    for (std::size_t i = 0; i < mesh.spheres.size(); ++i) (*from)[i] = i;
+  }
   const auto later = [first](const Entry& a, const Entry& b) { return first(b, a); };
   std::priority_queue<Entry, std::vector<Entry>, decltype(later)> queue(later);
   for (std::size_t i = 0; i < mesh.spheres.size(); ++i) queue.emplace(mesh.spheres[i].w(), i);
@@ -51,6 +57,7 @@ void settle(MedialMesh& mesh, const Neighbours& neighbours, First first, const O
       const double offered = offer(radius, i, j);
       if (!settled[j] && first(Entry(offered, j), Entry(mesh.spheres[j].w(), j))) {
         mesh.spheres[j].w() = offered;
+        if (from != nullptr) (*from)[j] = i;
         queue.emplace(offered, j);
       }
     }
@@ -59,7 +66,8 @@ void settle(MedialMesh& mesh, const Neighbours& neighbours, First first, const O
 
 }  // namespace
 
-void limit_radius_slope(MedialMesh& mesh, double slope, const Clearance& clearance) {
+void limit_radius_slope(MedialMesh& mesh, double slope, const Clearance& clearance,
+                        std::vector<std::size_t>* bounded_by) {
   const Neighbours neighbours = neighbours_of(mesh);
   if (clearance) {
     std::vector<double> room(mesh.spheres.size());
@@ -74,7 +82,7 @@ void limit_radius_slope(MedialMesh& mesh, double slope, const Clearance& clearan
   // Pass 2: the smallest radius settles first and bounds its neighbours, an
   // edge costing slope × its length.
   settle(mesh, neighbours, std::less<Entry>(),
-         [&](double radius, std::size_t i, std::size_t j) { return radius + slope * length(mesh, i, j); });
+         [&](double radius, std::size_t i, std::size_t j) { return radius + slope * length(mesh, i, j); }, bounded_by);
 }
 
 }  // namespace skelconv::reconstruct

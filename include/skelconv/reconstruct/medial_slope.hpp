@@ -23,7 +23,9 @@
 // so the fit shrinks only by default (MedialOptions::grow_within_input).
 #pragma once
 
+#include <cstddef>
 #include <functional>
+#include <vector>
 
 #include "skelconv/reconstruct/medial_mesh.hpp"
 
@@ -43,7 +45,12 @@ using Clearance = std::function<double(const Vec3&)>;
 ///     path of edges from it to v) over the spheres v, its own radius
 ///     included (the largest radii within the bound below those of pass 1;
 ///     the smallest radius stays).
-/// Same mesh, same radii; radii already within the bound stay.
-void limit_radius_slope(MedialMesh& mesh, double slope, const Clearance& clearance = {});
+/// Same mesh, same radii; radii already within the bound stay. With
+/// `bounded_by`, it gets for each sphere the neighbour whose radius plus
+/// slope × their distance its radius became in pass 2 (the edge it is at the
+/// bound along), or the sphere itself where pass 2 left its radius: the
+/// edges a step pushed past the bound (the fit's active set, medial_step.hpp).
+void limit_radius_slope(MedialMesh& mesh, double slope, const Clearance& clearance = {},
+                        std::vector<std::size_t>* bounded_by = nullptr);
 
 }  // namespace skelconv::reconstruct
