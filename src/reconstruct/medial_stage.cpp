@@ -372,6 +372,9 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // taken again, moved to the back as a new one would be, and nothing is
   // meshed (the mesh, and so its topology, is a function of the skeleton).
   std::vector<std::pair<MedialMesh, TriangleMesh>> meshed;
+  // One progress line a meshing: a search of the guard meshes a dozen to
+  // twenty times, a few seconds each, and would be silent for minutes.
+  std::size_t meshings = 0;
   // `as_filled`: the cavities of the surface that fill_cavities.hpp fills
   // after the fit (hollows inside the input's solid, bubbles of a crease's
   // air where the input encloses none), all, the bubbles alone or none,
@@ -380,7 +383,8 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   const auto defects = [&](const MedialMesh& medial, GuardFilledCavities as_filled) {
     const auto known =
         std::find_if(meshed.begin(), meshed.end(), [&medial](const auto& entry) { return same(entry.first, medial); });
-    if (known != meshed.end()) {
+    const bool fresh = known == meshed.end();
+    if (!fresh) {
       std::rotate(known, known + 1, meshed.end());
     } else {
       Stage s;
@@ -388,14 +392,18 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
       s.medial = medial;
       meshed.emplace_back(medial, mesh_stage_unprojected(surface, s, o));
     }
-    return topology_defects(input_topology,
-                            detail::topology_after_fill(
-                                meshed.back().second,
-                                as_filled == GuardFilledCavities::none
-                                    ? std::vector<detail::Cavity>{}
-                                    : detail::spurious_cavities(meshed.back().second, depth, input_hollow, facet,
-                                                                m.kernel_sigma),
-                                as_filled));
+    const long long found = topology_defects(
+        input_topology,
+        detail::topology_after_fill(meshed.back().second,
+                                    as_filled == GuardFilledCavities::none
+                                        ? std::vector<detail::Cavity>{}
+                                        : detail::spurious_cavities(meshed.back().second, depth, input_hollow,
+                                                                    facet, m.kernel_sigma),
+                                    as_filled));
+    if (fresh && o.progress)
+      o.progress(fmt::format("medial fit: topology test {}: the skeleton meshed at the diagonal / {}, {} defect{}",
+                             ++meshings, o.measure_divisions, found, found == 1 ? "" : "s"));
+    return found;
   };
   const TopologyError topology_error = [&](const MedialMesh& medial) {
     return defects(medial, GuardFilledCavities::none);
