@@ -59,7 +59,7 @@ def machine():
 
 def field_time(m):
     """(seconds, evaluations) of the field from `skelconv mesh`'s line
-    `time: T s (field F s in N evaluations, mesher M s)`."""
+    `time: T s (field F s in N evaluations, summed over the threads)`."""
     match = re.search(r"field ([0-9.]+) s in ([0-9]+) evaluations", m.stats.get("time", ""))
     if not match:
         raise surface3d.MeshError(f"{m.command}: no field time in its output: {m.stats.get('time')!r}")
