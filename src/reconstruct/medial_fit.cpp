@@ -511,8 +511,9 @@ void run_rounds(MedialMesh& mesh, Evaluation& now, double& lambda, const FitPoin
           for (std::size_t i = 0; i < tied_to.size() && !tied; ++i) tied = tied_to[i] != i;
           step = joint_step(mesh, equations, lambda, o.min_radius, start, guard.held, o.max_radius_slope,
                             tied ? &tied_to : nullptr);
+          // Which neighbour bounded each radius is read only to tie it.
           std::vector<std::size_t> bounded_by;
-          trial = stepped(mesh, step, every, o.max_radius_slope, clearance, &bounded_by);
+          trial = stepped(mesh, step, every, o.max_radius_slope, clearance, tie ? &bounded_by : nullptr);
           if (!tie || pass >= o.bound_tie_passes) break;
           const std::size_t made = skelconv::detail::tie_lowered_radii(tied_to, bounded_by, guard.held);
           if (made == 0) break;
