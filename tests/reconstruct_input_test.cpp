@@ -126,8 +126,9 @@ TriangleMesh subdivided(TriangleMesh mesh, int levels) {
 
 // The cube subdivided 5 times: on each face the grid of spacing 1/32,
 // 6 × 31² + 12 × 31 + 8 = 6,146 vertices, no edge longer than h = √3/12
-// (nothing added). Its vertices at one per cell of √3/200 = 0.00866 are one
-// per cell (6,146 cells, crowding 1): all kept. At √3/20 = 0.0866 the cells
+// (nothing added). Under thin_vertices_above (50,000) every vertex is a
+// sample; so is it above, where one per cell of √3/200 = 0.00866 is one per
+// cell (6,146 cells, crowding 1). At √3/20 = 0.0866 the cells
 // are indexed 0 to ⌊1/0.0866⌋ = 11 per axis, and those the surface meets are
 // the shell of the 12³ block, 12³ − 10³ = 728, each holding grid vertices
 // (the cell is wider than the spacing): 6,146 > 2 × 728, so one vertex per
@@ -139,6 +140,11 @@ TEST(SurfaceSamples, CrowdedVerticesAreThinnedToOnePerCellOfTheDiagonal) {
   EXPECT_EQ(surface_samples(fine).size(), 6146u);
   SamplingOptions coarse_cells;
   coarse_cells.vertex_cell_divisions = 20.0;
+  EXPECT_EQ(surface_samples(fine, coarse_cells).size(), 6146u);  // 6,146 vertices: too few to thin
+  coarse_cells.thin_vertices_above = 6145;
+  SamplingOptions fine_cells;
+  fine_cells.thin_vertices_above = 6145;
+  EXPECT_EQ(surface_samples(fine, fine_cells).size(), 6146u);
   const std::vector<std::int32_t> kept = sample_vertices(fine, coarse_cells);
   ASSERT_EQ(kept.size(), 728u);
   EXPECT_TRUE(std::is_sorted(kept.begin(), kept.end()));

@@ -128,7 +128,9 @@ void for_each_added_sample(const TriangleMesh& mesh, std::size_t vertices, const
 std::vector<std::int32_t> sample_vertices(const TriangleMesh& mesh, const SamplingOptions& options) {
   std::vector<std::int32_t> all(mesh.vertices.size());
   for (std::size_t v = 0; v < all.size(); ++v) all[v] = std::int32_t(v);
-  if (mesh.vertices.empty() || !(options.vertex_cell_divisions > 0.0)) return all;
+  if (mesh.vertices.empty() || mesh.vertices.size() <= options.thin_vertices_above ||
+      !(options.vertex_cell_divisions > 0.0))
+    return all;
   const double cell = diagonal(mesh) / options.vertex_cell_divisions;
   if (!(cell > 0.0)) return all;
   std::vector<WeightedPoint> points;

@@ -46,17 +46,22 @@ struct SamplingOptions {
   /// vertices taken, sample_vertices, count in it; where they alone exceed
   /// it, no point is added).
   std::size_t max_samples = 200000;
-  /// The vertices are thinned to one per cell of a grid of spacing
-  /// diagonal / vertex_cell_divisions where they outnumber the cells that
-  /// hold any by more than `vertex_crowding` (sample_vertices). 200: a cell
-  /// is 2.5 times finer than the medial path's finest spacing (a thin wall
-  /// sampled at diagonal / 40 / 2.5), so that the thinned samples still
-  /// resolve what the path looks at. A crowding of 2: thinning only where
-  /// it removes more than half the vertices; the meshes of
-  /// docs/reconstruction_medial.md's tables are at most 1.96 (CGAL's man;
-  /// bunny00 1.49) and keep every vertex, a mesh subdivided once or twice
-  /// (each vertex then has 4 or 16 in its place) 2.4 to 3.7.
-  /// 0 divisions: every vertex is a sample.
+  /// A mesh of more than `thin_vertices_above` vertices has them thinned
+  /// to one per cell of a grid of spacing diagonal / vertex_cell_divisions
+  /// where they outnumber the cells that hold any by more than
+  /// `vertex_crowding` (sample_vertices). 200: a cell is 2.5 times finer
+  /// than the medial path's finest spacing (a thin wall sampled at
+  /// diagonal / 40 / 2.5), so that the thinned samples still resolve what
+  /// the path looks at. A crowding of 2: thinning only where it removes
+  /// more than half the vertices (a mesh subdivided once or twice, each
+  /// vertex then with 4 or 16 in its place: 2.4 to 3.7). 50,000 vertices:
+  /// below it the triangulation is cheap whatever the crowding, and small
+  /// meshes crowded about their details (CGAL's boeing, 2,741 vertices,
+  /// 2.58; the blade 3.97; the man once repaired, about 2.0) keep them;
+  /// every mesh of docs/reconstruction_medial.md's tables is under it
+  /// (bunny00 37,706, crowding 1.49). 0 divisions: every vertex is a
+  /// sample.
+  std::size_t thin_vertices_above = 50000;
   double vertex_cell_divisions = 200.0;
   double vertex_crowding = 2.0;
   /// Empty, or one factor (≥ 1) per triangle of the mesh: that triangle is
@@ -68,9 +73,9 @@ struct SamplingOptions {
 };
 
 /// The vertices of `mesh` taken as samples, in increasing order: every
-/// vertex, unless they outnumber the cells of spacing diagonal /
-/// `vertex_cell_divisions` that hold a vertex by more than
-/// `vertex_crowding` times; then one per such cell, the vertex nearest the
+/// vertex, unless they are more than `thin_vertices_above` and outnumber
+/// the cells of spacing diagonal / `vertex_cell_divisions` that hold a
+/// vertex by more than `vertex_crowding` times; then one per such cell, the vertex nearest the
 /// centroid of the cell's vertices (the first of equals; merged_in_cells of
 /// ball_fit.hpp with on_surface).
 std::vector<std::int32_t> sample_vertices(const TriangleMesh& mesh, const SamplingOptions& options = {});
