@@ -1,6 +1,7 @@
 // Implementation of skelconv/reconstruct/surface_samples.hpp.
 #include "skelconv/reconstruct/surface_samples.hpp"
 
+#include "skelconv/mesh/bounding_region.hpp"
 #include "skelconv/reconstruct/ball_fit.hpp"
 
 #include <algorithm>
@@ -76,18 +77,12 @@ std::size_t added_count(const TriangleMesh& mesh, const std::vector<EdgeUse>& ed
   return count;
 }
 
-double diagonal(const TriangleMesh& mesh) {
-  Vec3 lo = mesh.vertices.front(), hi = lo;
-  for (const Vec3& v : mesh.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
-  return (hi - lo).norm();
-}
-
 /// The spacing h (SamplingOptions): diagonal / divisions, doubled until
 /// the samples (`vertices` of the mesh's and the added points) fit the
 /// budget, or until no point is added.
 double spacing(const TriangleMesh& mesh, std::size_t vertices, const std::vector<EdgeUse>& edges,
                const SamplingOptions& o) {
-  double h = diagonal(mesh) / o.diagonal_divisions;
+  double h = bounding_box(mesh.vertices).diagonal() / o.diagonal_divisions;
   if (!(h > 0.0)) return INFINITY;  // every point in one place: nothing to spread
   for (std::size_t added = added_count(mesh, edges, h, o); vertices + added > o.max_samples && added > 0;
        added = added_count(mesh, edges, h, o))
@@ -131,7 +126,7 @@ std::vector<std::int32_t> sample_vertices(const TriangleMesh& mesh, const Sampli
   if (mesh.vertices.empty() || mesh.vertices.size() <= options.thin_vertices_above ||
       !(options.vertex_cell_divisions > 0.0))
     return all;
-  const double cell = diagonal(mesh) / options.vertex_cell_divisions;
+  const double cell = bounding_box(mesh.vertices).diagonal() / options.vertex_cell_divisions;
   if (!(cell > 0.0)) return all;
   std::vector<WeightedPoint> points;
   points.reserve(mesh.vertices.size());
