@@ -11,6 +11,7 @@
 #include <map>
 #include <numbers>
 #include <numeric>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -93,6 +94,77 @@ TEST(SurfaceSamples, BudgetIsKept) {
   const std::size_t n = surface_samples(unit_cube(), small).size();
   EXPECT_LE(n, 200u);
   EXPECT_GT(n, 8u);
+}
+
+// Where the vertices alone are over the budget, no point is added (h
+// doubles until none would be) and the vertices stay: the cube's 8.
+TEST(SurfaceSamples, VerticesOverTheBudgetAddNoPoint) {
+  SamplingOptions tiny;
+  tiny.max_samples = 5;
+  EXPECT_EQ(surface_samples(unit_cube(), tiny).size(), 8u);
+}
+
+/// `mesh` with each triangle cut into four at its edges' midpoints,
+/// `levels` times (a midpoint shared by two triangles made once).
+TriangleMesh subdivided(TriangleMesh mesh, int levels) {
+  for (int level = 0; level < levels; ++level) {
+    std::map<std::pair<std::int32_t, std::int32_t>, std::int32_t> midpoint;
+    const auto middle = [&](std::int32_t a, std::int32_t b) {
+      const auto [at, added] = midpoint.try_emplace(std::minmax(a, b), std::int32_t(mesh.vertices.size()));
+      if (added) mesh.vertices.push_back((mesh.vertices[std::size_t(a)] + mesh.vertices[std::size_t(b)]) / 2);
+      return at->second;
+    };
+    std::vector<std::array<std::int32_t, 3>> finer;
+    for (const auto& [a, b, c] : mesh.triangles) {
+      const std::int32_t ab = middle(a, b), bc = middle(b, c), ca = middle(c, a);
+      finer.insert(finer.end(), {{a, ab, ca}, {ab, b, bc}, {ca, bc, c}, {ab, bc, ca}});
+    }
+    mesh.triangles = std::move(finer);
+  }
+  return mesh;
+}
+
+// The cube subdivided 5 times: on each face the grid of spacing 1/32,
+// 6 × 31² + 12 × 31 + 8 = 6,146 vertices, no edge longer than h = √3/12
+// (nothing added). Under thin_vertices_above (50,000) every vertex is a
+// sample; so is it above, where one per cell of √3/200 = 0.00866 is one per
+// cell (6,146 cells, crowding 1). At √3/20 = 0.0866 the cells
+// are indexed 0 to ⌊1/0.0866⌋ = 11 per axis, and those the surface meets are
+// the shell of the 12³ block, 12³ − 10³ = 728, each holding grid vertices
+// (the cell is wider than the spacing): 6,146 > 2 × 728, so one vertex per
+// cell, 728 samples, each a vertex of the mesh, in increasing order, each
+// sample's triangle one of its vertex's.
+TEST(SurfaceSamples, CrowdedVerticesAreThinnedToOnePerCellOfTheDiagonal) {
+  const TriangleMesh fine = subdivided(unit_cube(), 5);
+  ASSERT_EQ(fine.vertices.size(), 6146u);
+  EXPECT_EQ(surface_samples(fine).size(), 6146u);
+  SamplingOptions coarse_cells;
+  coarse_cells.vertex_cell_divisions = 20.0;
+  EXPECT_EQ(surface_samples(fine, coarse_cells).size(), 6146u);  // 6,146 vertices: too few to thin
+  coarse_cells.thin_vertices_above = 6145;
+  SamplingOptions fine_cells;
+  fine_cells.thin_vertices_above = 6145;
+  EXPECT_EQ(surface_samples(fine, fine_cells).size(), 6146u);
+  const std::vector<std::int32_t> kept = sample_vertices(fine, coarse_cells);
+  ASSERT_EQ(kept.size(), 728u);
+  EXPECT_TRUE(std::is_sorted(kept.begin(), kept.end()));
+  const std::vector<Vec3> samples = surface_samples(fine, coarse_cells);
+  const std::vector<std::int32_t> on = sample_triangles(fine, coarse_cells);
+  ASSERT_EQ(samples.size(), 728u);
+  ASSERT_EQ(on.size(), 728u);
+  const double cell = std::sqrt(3.0) / 20.0;
+  std::set<std::array<std::int64_t, 3>> cells;
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    EXPECT_EQ(samples[k], fine.vertices[std::size_t(kept[k])]);
+    const auto& t = fine.triangles[std::size_t(on[k])];
+    EXPECT_TRUE(t[0] == kept[k] || t[1] == kept[k] || t[2] == kept[k]) << k;
+    cells.insert({std::int64_t(std::floor(samples[k].x() / cell)), std::int64_t(std::floor(samples[k].y() / cell)),
+                  std::int64_t(std::floor(samples[k].z() / cell))});
+  }
+  EXPECT_EQ(cells.size(), 728u);
+  // Less crowded than the rule asks: every vertex.
+  coarse_cells.vertex_crowding = 9.0;
+  EXPECT_EQ(surface_samples(fine, coarse_cells).size(), 6146u);
 }
 
 // The cube's top face (triangles 2 and 3) refined twice: h / 2 = 0.07217.

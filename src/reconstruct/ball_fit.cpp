@@ -101,31 +101,53 @@ CellKey cell_of(const Vec3& p, double h) {
           std::int64_t(std::floor(p.z() / h)), 0};
 }
 
-/// `points` merged per key (`keys[k]` the key of `points[k]`), as
-/// merged_in_cells describes: one point per key, in the order of each key's
-/// first point.
-std::vector<WeightedPoint> merged_by_key(const std::vector<WeightedPoint>& points, const std::vector<CellKey>& keys,
-                                         bool on_surface) {
+/// `points` summed per key (`keys[k]` the key of `points[k]`): one entry
+/// per key, in the order of each key's first point, at the weighted
+/// centroid of its points with their total weight; `index[k]` the entry of
+/// points[k].
+std::vector<WeightedPoint> centroids_by_key(const std::vector<WeightedPoint>& points, const std::vector<CellKey>& keys,
+                                            std::vector<std::size_t>& index) {
   std::map<CellKey, std::size_t> cell_index;
   std::vector<WeightedPoint> sums;  // weighted sums of the points, then centroids
+  index.resize(points.size());
   for (std::size_t k = 0; k < points.size(); ++k) {
     const WeightedPoint& p = points[k];
     const auto [it, added] = cell_index.emplace(keys[k], sums.size());
     if (added) sums.push_back({Vec3::Zero(), 0.0});
     sums[it->second].point += p.weight * p.point;
     sums[it->second].weight += p.weight;
+    index[k] = it->second;
   }
   for (WeightedPoint& s : sums)
     if (s.weight > 0.0) s.point /= s.weight;
+  return sums;
+}
+
+/// For each entry of `centroids` (centroids_by_key), the point of its key
+/// nearest to it (the first of equals).
+std::vector<std::size_t> nearest_to_centroids(const std::vector<WeightedPoint>& points,
+                                              const std::vector<WeightedPoint>& centroids,
+                                              const std::vector<std::size_t>& index) {
+  std::vector<double> nearest(centroids.size(), std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> chosen(centroids.size(), 0);
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const std::size_t i = index[k];
+    const double d = (points[k].point - centroids[i].point).squaredNorm();
+    if (d < nearest[i]) nearest[i] = d, chosen[i] = k;
+  }
+  return chosen;
+}
+
+/// `points` merged per key (`keys[k]` the key of `points[k]`), as
+/// merged_in_cells describes: one point per key, in the order of each key's
+/// first point.
+std::vector<WeightedPoint> merged_by_key(const std::vector<WeightedPoint>& points, const std::vector<CellKey>& keys,
+                                         bool on_surface) {
+  std::vector<std::size_t> index;
+  std::vector<WeightedPoint> sums = centroids_by_key(points, keys, index);
   if (on_surface) {
-    std::vector<double> nearest(sums.size(), std::numeric_limits<double>::infinity());
-    std::vector<Vec3> chosen(sums.size());
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      const std::size_t i = cell_index.at(keys[k]);
-      const double d = (points[k].point - sums[i].point).squaredNorm();
-      if (d < nearest[i]) nearest[i] = d, chosen[i] = points[k].point;
-    }
-    for (std::size_t i = 0; i < sums.size(); ++i) sums[i].point = chosen[i];
+    const std::vector<std::size_t> chosen = nearest_to_centroids(points, sums, index);
+    for (std::size_t i = 0; i < sums.size(); ++i) sums[i].point = points[chosen[i]].point;
   }
   std::vector<WeightedPoint> merged;
   for (const WeightedPoint& s : sums)
@@ -140,6 +162,17 @@ std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& poi
   keys.reserve(points.size());
   for (const WeightedPoint& p : points) keys.push_back(cell_of(p.point, h));
   return merged_by_key(points, keys, on_surface);
+}
+
+std::vector<std::size_t> nearest_in_cells(const std::vector<WeightedPoint>& points, double h) {
+  std::vector<CellKey> keys;
+  keys.reserve(points.size());
+  for (const WeightedPoint& p : points) keys.push_back(cell_of(p.point, h));
+  std::vector<std::size_t> index;
+  const std::vector<WeightedPoint> centroids = centroids_by_key(points, keys, index);
+  std::vector<std::size_t> chosen = nearest_to_centroids(points, centroids, index);
+  std::sort(chosen.begin(), chosen.end());
+  return chosen;
 }
 
 std::vector<WeightedPoint> surface_points_in_cells(const TriangleMesh& mesh, double h, double facing_angle,

@@ -39,14 +39,21 @@ SurfaceMesh comparable_mesh(const TriangleMesh& surface) {
 auto sampling(double density) { return CGAL::parameters::number_of_points_per_area_unit(density).random_seed(0); }
 void reseed() { CGAL::get_default_random() = CGAL::Random(0); }
 
-/// The largest distance from a vertex of `from` to the surface `to`.
+/// The largest distance from a vertex of `from` to the surface `to`, each
+/// position asked once (split_to_edge_length repeats a corner for every
+/// triangle round it: six times on a fine mesh).
 double largest_vertex_distance(const TriangleMesh& from, const SurfaceMesh& to) {
   using Primitive = CGAL::AABB_face_graph_triangle_primitive<SurfaceMesh>;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
   Tree tree(faces(to).first, faces(to).second, to);
   tree.accelerate_distance_queries();
+  std::vector<std::array<double, 3>> points;
+  points.reserve(from.vertices.size());
+  for (const Vec3& v : from.vertices) points.push_back({v.x(), v.y(), v.z()});
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
   double largest = 0.0;
-  for (const Vec3& v : from.vertices) largest = std::max(largest, tree.squared_distance(Point(v.x(), v.y(), v.z())));
+  for (const auto& v : points) largest = std::max(largest, tree.squared_distance(Point(v[0], v[1], v[2])));
   return std::sqrt(largest);
 }
 

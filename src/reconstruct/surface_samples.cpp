@@ -1,6 +1,9 @@
 // Implementation of skelconv/reconstruct/surface_samples.hpp.
 #include "skelconv/reconstruct/surface_samples.hpp"
 
+#include "skelconv/mesh/bounding_region.hpp"
+#include "skelconv/reconstruct/ball_fit.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -75,25 +78,27 @@ std::size_t added_count(const TriangleMesh& mesh, const std::vector<EdgeUse>& ed
 }
 
 /// The spacing h (SamplingOptions): diagonal / divisions, doubled until
-/// the samples fit the budget.
-double spacing(const TriangleMesh& mesh, const std::vector<EdgeUse>& edges, const SamplingOptions& o) {
-  Vec3 lo = mesh.vertices.front(), hi = lo;
-  for (const Vec3& v : mesh.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
-  double h = (hi - lo).norm() / o.diagonal_divisions;
+/// the samples (`vertices` of the mesh's and the added points) fit the
+/// budget, or until no point is added.
+double spacing(const TriangleMesh& mesh, std::size_t vertices, const std::vector<EdgeUse>& edges,
+               const SamplingOptions& o) {
+  double h = bounding_box(mesh.vertices).diagonal() / o.diagonal_divisions;
   if (!(h > 0.0)) return INFINITY;  // every point in one place: nothing to spread
-  while (mesh.vertices.size() + added_count(mesh, edges, h, o) > o.max_samples) h *= 2.0;
+  for (std::size_t added = added_count(mesh, edges, h, o); vertices + added > o.max_samples && added > 0;
+       added = added_count(mesh, edges, h, o))
+    h *= 2.0;
   return h;
 }
 
 /// Calls add(point, triangle) for each added sample, in the order of
 /// surface_samples.
 template <class Add>
-void for_each_added_sample(const TriangleMesh& mesh, const SamplingOptions& options, Add&& add) {
+void for_each_added_sample(const TriangleMesh& mesh, std::size_t vertices, const SamplingOptions& options, Add&& add) {
   if (!options.triangle_refinement.empty() && options.triangle_refinement.size() != mesh.triangles.size())
     throw std::invalid_argument("surface_samples: triangle_refinement needs one factor per triangle");
   const std::vector<EdgeUse> edges = unique_edges(mesh, options);
   if (edges.empty()) return;
-  const double h = spacing(mesh, edges, options);
+  const double h = spacing(mesh, vertices, edges, options);
   for (const EdgeUse& e : edges) {
     const std::size_t n = steps(length(mesh, e.edge), h / e.refinement);
     const Vec3& a = mesh.vertices[std::size_t(e.edge.first)];
@@ -115,17 +120,37 @@ void for_each_added_sample(const TriangleMesh& mesh, const SamplingOptions& opti
 
 }  // namespace
 
+std::vector<std::int32_t> sample_vertices(const TriangleMesh& mesh, const SamplingOptions& options) {
+  std::vector<std::int32_t> all(mesh.vertices.size());
+  for (std::size_t v = 0; v < all.size(); ++v) all[v] = std::int32_t(v);
+  if (mesh.vertices.empty() || mesh.vertices.size() <= options.thin_vertices_above ||
+      !(options.vertex_cell_divisions > 0.0))
+    return all;
+  const double cell = bounding_box(mesh.vertices).diagonal() / options.vertex_cell_divisions;
+  if (!(cell > 0.0)) return all;
+  std::vector<WeightedPoint> points;
+  points.reserve(mesh.vertices.size());
+  for (const Vec3& v : mesh.vertices) points.push_back({v, 1.0});
+  const std::vector<std::size_t> kept = nearest_in_cells(points, cell);
+  if (double(mesh.vertices.size()) <= options.vertex_crowding * double(kept.size())) return all;
+  return {kept.begin(), kept.end()};
+}
+
 std::vector<Vec3> surface_samples(const TriangleMesh& mesh, const SamplingOptions& options) {
-  std::vector<Vec3> samples = mesh.vertices;
-  for_each_added_sample(mesh, options, [&samples](const Vec3& p, std::int32_t) { samples.push_back(p); });
+  std::vector<Vec3> samples;
+  for (const std::int32_t v : sample_vertices(mesh, options)) samples.push_back(mesh.vertices[std::size_t(v)]);
+  for_each_added_sample(mesh, samples.size(), options, [&samples](const Vec3& p, std::int32_t) { samples.push_back(p); });
   return samples;
 }
 
 std::vector<std::int32_t> sample_triangles(const TriangleMesh& mesh, const SamplingOptions& options) {
-  std::vector<std::int32_t> triangles(mesh.vertices.size(), -1);
+  std::vector<std::int32_t> first(mesh.vertices.size(), -1);
   for (std::size_t i = mesh.triangles.size(); i-- > 0;)
-    for (const std::int32_t v : mesh.triangles[i]) triangles[std::size_t(v)] = std::int32_t(i);
-  for_each_added_sample(mesh, options, [&triangles](const Vec3&, std::int32_t t) { triangles.push_back(t); });
+    for (const std::int32_t v : mesh.triangles[i]) first[std::size_t(v)] = std::int32_t(i);
+  std::vector<std::int32_t> triangles;
+  for (const std::int32_t v : sample_vertices(mesh, options)) triangles.push_back(first[std::size_t(v)]);
+  for_each_added_sample(mesh, triangles.size(), options,
+                        [&triangles](const Vec3&, std::int32_t t) { triangles.push_back(t); });
   return triangles;
 }
 

@@ -41,6 +41,11 @@ std::vector<WeightedPoint> area_weighted_points(const TriangleMesh& mesh, double
 std::vector<WeightedPoint> merged_in_cells(const std::vector<WeightedPoint>& points, double h,
                                            bool on_surface = false);
 
+/// The indices of the points merged_in_cells(points, h, true) keeps, one
+/// per cell (each cell's point nearest to its points' weighted centroid),
+/// in increasing order.
+std::vector<std::size_t> nearest_in_cells(const std::vector<WeightedPoint>& points, double h);
+
 /// The area-weighted points of `mesh` at spacing h (area_weighted_points)
 /// merged per cell as merged_in_cells with `on_surface`, but only the points
 /// of triangles that face alike: within a cell, a point joins the first
