@@ -234,6 +234,24 @@ TriangleMesh cylinder() {
   return m;
 }
 
+// Two points of a branch a rounding apart (1 and the next double, 2.2e-16:
+// the curve path's fit of an open box closed by --repair left such a pair)
+// make a piece that skeleton files refuse (shorter than 1e-8 of its
+// coordinates): it is left out of the written skeleton, which reads back
+// with the segment from the second point to (2, 0, 0) and the two end
+// extensions (extend_free_ends): 3 segments, not 4.
+TEST(SkeletonFile, APieceARoundingLongIsLeftOut) {
+  Branch b;
+  b.first_node = 0, b.last_node = 1;
+  b.points = {Vec4(1, 0, 0, 0.3), Vec4(std::nextafter(1.0, 2.0), 0, 0, 0.3), Vec4(2, 0, 0, 0.3)};
+  Stage s;
+  s.branches = {b};
+  const ReconstructOptions o;
+  EXPECT_EQ(primitive_counts(s, o).segments, 3u);
+  const Skeleton skeleton = parse_skeleton_json(skeleton_file_text(s, o));
+  EXPECT_GT(skeleton.value(Vec3(1.5, 0, 0)), 0.0);
+}
+
 // A branch on the cylinder's axis from −1.5 to 1.5 at radius 0.3 (far too
 // thin): after the fit, the reconstructed surface is at the cylinder's
 // radius 0.5 in the middle and reaches the caps at x = ±2 on the axis.

@@ -17,12 +17,13 @@ that does not depend on the file's order gives the same bytes.
 
     copies_spread.py SKELCONV WORKDIR [--rotations N] [--renumberings N] SHAPE[:ROT[:REN]]...
 
-A SHAPE is a path, or a name under /tmp/cgaldata/data/meshes (CGAL's
-sample meshes); ROT and REN override the counts for that shape.
+A SHAPE is a path, or a name under $CGAL_MESHES (default data/meshes: CGAL's
+sample meshes, from /usr/share/doc/libcgal-dev/data.tar.gz of libcgal-demo); ROT and REN override the counts for that shape.
 """
 import argparse
 import hashlib
 import json
+import os
 import pathlib
 import subprocess
 import sys
@@ -30,7 +31,9 @@ import time
 
 import numpy as np
 
-CGAL_MESHES = pathlib.Path("/tmp/cgaldata/data/meshes")
+# CGAL's sample meshes, unpacked from the Debian package libcgal-demo:
+#   tar xzf /usr/share/doc/libcgal-dev/data.tar.gz -C DIR  (then DIR/data/meshes)
+CGAL_MESHES = pathlib.Path(os.environ.get("CGAL_MESHES", "data/meshes"))
 
 
 def read_off(path):

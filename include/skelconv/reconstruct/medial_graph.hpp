@@ -67,7 +67,7 @@ struct MedialGraph {
 };
 
 /// The inner Voronoi graph of the surface samples of `surface`
-/// (surface_samples.hpp: its vertices first, so that sample i is vertex i),
+/// (surface_samples.hpp: the vertices it takes first, then the added points),
 /// which must be a closed triangle mesh (the inside test needs one). Throws
 /// InputError if it has fewer than `minimum_samples` distinct samples, no
 /// triangles, or is not closed (an edge not shared by exactly two triangles).
