@@ -146,6 +146,7 @@ struct QuadricReport {
   std::size_t loops_closed = 0;  ///< covered loops the collapses closed (the header)
   std::size_t loops_closed_inside = 0;  ///< of those, loops inside the input, not the balls (inside_samples)
   std::size_t bridges_closed = 0;       ///< sheets closed across a tube edge after the collapses (inside_samples)
+  std::size_t holes_closed = 0;         ///< holes through sheets closed after the collapses (inside_samples)
   std::size_t tips_held = 0;            ///< balls held in place for their reach points (reach_points)
 };
 
