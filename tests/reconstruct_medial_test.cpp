@@ -151,9 +151,9 @@ TEST(QuadricMedialMesh, HoleWiderThanTheBallsIsClosedWhereTheInputHoldsIt) {
 
 TEST(QuadricMedialMesh, HoleTheCollapsesLeftIsClosedWhereTheInputHoldsIt) {
   // The same thin wall's sheet with its hole (a rim of 24 edges, none
-  // bridged), not simplified: the collapses stopped at the budget before
-  // the hole shrank to a loop of three edges (CGAL's rotor_small: nine such
-  // loops of three edges and one of four through its shell's sheet). The
+  // bridged), not simplified: the budget stopped the collapses before any
+  // met the hole's rim (CGAL's rotor_small: three such holes through its
+  // shell's sheet, each a loop of three edges no collapse touched). The
   // input holds the disc across it when the plate is solid (closed: the
   // sheet a disc, χ 1), not when the hole is a tunnel of the plate (χ 0);
   // the sheet's outer rim is never closed over the sheet (χ 2).

@@ -448,11 +448,12 @@ class Boundaries {
 /// is a hole through a sheet, a tunnel of the complex; where the input
 /// holds the triangles that close it (round_triangles, held_by_input) it
 /// is no tunnel of the shape but what is left of a sheet whose Voronoi
-/// faces were dropped (a wall thinner than the samples' spacing), or whose
-/// collapses stopped before its hole shrank to a loop of three edges, and
-/// it is closed. Shortest loops first: the rim round a sheet with holes
-/// bounds no triangles until its holes are closed, and then it does, so it
-/// is never closed over the sheet. Returns the loops closed.
+/// faces were dropped (a wall thinner than the samples' spacing), which
+/// link_condition would have closed had a collapse on its rim met it as a
+/// loop of three edges before the budget stopped them; it is closed.
+/// Shortest loops first: the rim round a sheet with holes bounds no
+/// triangles until its holes are closed, and then it does, so it is never
+/// closed over the sheet. Returns the loops closed.
 std::size_t close_sheet_holes(Complex& k, const QuadricOptions& o) {
   std::vector<std::vector<Index>> loops = rim_loops(k);
   const auto length = [&k](const std::vector<Index>& loop) {

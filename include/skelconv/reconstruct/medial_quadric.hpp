@@ -49,8 +49,8 @@
 // collapse, and after the collapses each side of a tube edge that bridges
 // a hole between two spheres of sheets (the loop of the edge and the
 // shortest way back along the hole's rim, closed by a fan of triangles),
-// then each hole through a sheet that the collapses stopped at before it
-// shrank to three edges: a loop of the sheets' rims (edges on one triangle)
+// then each hole through a sheet that the collapses left (the budget
+// reached before a collapse on its rim): a loop of the sheets' rims (edges on one triangle)
 // that bounds no triangles of the complex (over GF(2), shortest loops
 // first, so that a sheet's outer rim, which bounds the sheet once its holes
 // are closed, is never closed over it).
@@ -116,7 +116,7 @@ struct QuadricOptions {
   /// than the samples' spacing punched into a sheet, wider than the balls
   /// on its rim. After the collapses, each side of a tube edge between two
   /// spheres of sheets is closed the same way, and then each hole through a
-  /// sheet the collapses left wider than three edges (the header). Off (0) by
+  /// sheet the collapses left (the header). Off (0) by
   /// default: the sum of fields covers most such holes, and
   /// medial_stage.cpp asks for it only where the reconstruction came back
   /// with a tunnel too many.
