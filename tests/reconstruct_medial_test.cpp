@@ -149,6 +149,28 @@ TEST(QuadricMedialMesh, HoleWiderThanTheBallsIsClosedWhereTheInputHoldsIt) {
   }
 }
 
+TEST(QuadricMedialMesh, HoleTheCollapsesLeftIsClosedWhereTheInputHoldsIt) {
+  // The same thin wall's sheet with its hole (a rim of 24 edges, none
+  // bridged), not simplified: the budget stopped the collapses before any
+  // met the hole's rim (CGAL's rotor_small: three such holes through its
+  // shell's sheet, each a loop of three edges no collapse touched). The
+  // input holds the disc across it when the plate is solid (closed: the
+  // sheet a disc, χ 1), not when the hole is a tunnel of the plate (χ 0);
+  // the sheet's outer rim is never closed over the sheet (χ 2).
+  const MedialGraph g = quadric_sheet(21, 0.05, 0.02, 7, 13);
+  for (const bool tunnel : {false, true}) {
+    QuadricOptions o;
+    o.budget = 100000;
+    o.depth = plate_depth(0.02, tunnel, 0.36, 0.64);
+    o.inside_samples = 4;
+    QuadricReport report;
+    const MedialMesh m = quadric_medial_mesh(g, o, &report);
+    EXPECT_EQ(report.collapses, 0u);
+    EXPECT_EQ(report.holes_closed, tunnel ? 0u : 1u);
+    EXPECT_EQ(euler_characteristic(m), tunnel ? 0 : 1) << m.triangles.size() << " triangles";
+  }
+}
+
 TEST(QuadricMedialMesh, TubeEdgeAcrossASheetsHoleIsClosedWhereTheInputHoldsIt) {
   // The same thin wall's sheet with a tube edge across its hole (a Voronoi
   // edge whose faces were dropped with the hole's), not simplified: two

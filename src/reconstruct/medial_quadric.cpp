@@ -2,6 +2,8 @@
 #include "skelconv/reconstruct/medial_quadric.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -343,6 +345,143 @@ std::size_t close_bridged_sheets(Complex& k, const QuadricOptions& o) {
   return closed;
 }
 
+/// Loops of the sheets' rims: the edges on exactly one triangle, walked
+/// into simple cycles (a walk that comes back to one of its vertices cuts
+/// that cycle off; one that ends where no rim edge is left is dropped), in
+/// a fixed order.
+std::vector<std::vector<Index>> rim_loops(const Complex& k) {
+  std::map<Index, std::vector<Index>> rim;  // sorted neighbours along the rim
+  for (Index u = 0; u < Index(k.sphere.size()); ++u) {
+    if (!k.alive[std::size_t(u)]) continue;
+    for (const Index v : k.neighbours[std::size_t(u)])
+      if (u < v && triangles_on(k, u, v) == 1) rim[u].push_back(v), rim[v].push_back(u);
+  }
+  for (auto& [u, next] : rim) std::sort(next.begin(), next.end());
+  const auto key = [](Index a, Index b) { return std::array<Index, 2>{std::min(a, b), std::max(a, b)}; };
+  std::set<std::array<Index, 2>> used;
+  std::vector<std::vector<Index>> loops;
+  for (const auto& [start, first_next] : rim)
+    for (const Index first : first_next) {
+      if (used.count(key(start, first))) continue;
+      std::vector<Index> path{start};
+      std::map<Index, std::size_t> at{{start, 0}};
+      Index x = start, y = first;
+      while (true) {
+        used.insert(key(x, y));
+        if (const auto seen = at.find(y); seen != at.end()) {
+          const std::size_t from = seen->second;
+          loops.emplace_back(path.begin() + std::ptrdiff_t(from), path.end());
+          for (std::size_t i = from + 1; i < path.size(); ++i) at.erase(path[i]);
+          path.resize(from + 1);
+        } else {
+          at[y] = path.size();
+          path.push_back(y);
+        }
+        x = y;
+        y = -1;
+        for (const Index w : rim[x])
+          if (!used.count(key(x, w))) {
+            y = w;
+            break;
+          }
+        if (y < 0) break;
+      }
+    }
+  return loops;
+}
+
+/// Chains of edges over GF(2), each a set of edges as bits, reduced
+/// against the boundaries of the complex's triangles: a loop is the rim of
+/// a piece of sheet (it bounds triangles already) where it reduces to
+/// nothing.
+class Boundaries {
+ public:
+  explicit Boundaries(const Complex& k) {
+    for (const Triangle& t : k.triangles) add(t);
+  }
+  void add(const Triangle& t) { insert(chain({{t[0], t[1]}, {t[1], t[2]}, {t[0], t[2]}})); }
+  /// Whether the closed loop `polygon` bounds triangles of the complex.
+  bool bounds(const std::vector<Index>& polygon) {
+    std::vector<std::array<Index, 2>> edges;
+    for (std::size_t i = 0; i < polygon.size(); ++i) edges.push_back({polygon[i], polygon[(i + 1) % polygon.size()]});
+    return reduced(chain(edges)).empty();
+  }
+
+ private:
+  using Bits = std::vector<std::uint64_t>;
+  Bits chain(const std::vector<std::array<Index, 2>>& edges) {
+    Bits bits;
+    for (const auto& [a, b] : edges) {
+      const auto [at, added] = number_.try_emplace({std::min(a, b), std::max(a, b)}, number_.size());
+      const std::size_t n = at->second;
+      if (bits.size() <= n / 64) bits.resize(n / 64 + 1, 0);
+      bits[n / 64] ^= std::uint64_t(1) << (n % 64);
+    }
+    trim(bits);
+    return bits;
+  }
+  static void trim(Bits& bits) {
+    while (!bits.empty() && bits.back() == 0) bits.pop_back();
+  }
+  static std::size_t highest(const Bits& bits) {
+    return 64 * (bits.size() - 1) + std::size_t(63 - std::countl_zero(bits.back()));
+  }
+  Bits reduced(Bits bits) const {
+    while (!bits.empty()) {
+      const auto row = rows_.find(highest(bits));
+      if (row == rows_.end()) break;
+      for (std::size_t i = 0; i < row->second.size(); ++i) bits[i] ^= row->second[i];
+      trim(bits);
+    }
+    return bits;
+  }
+  void insert(const Bits& bits) {
+    Bits r = reduced(bits);
+    if (!r.empty()) rows_.emplace(highest(r), std::move(r));
+  }
+  std::map<std::array<Index, 2>, std::size_t> number_;
+  std::map<std::size_t, Bits> rows_;  // by the highest edge each holds
+};
+
+/// Closes the holes of the sheets (QuadricOptions::inside_samples): a loop
+/// of the sheets' rims (rim_loops) that bounds no triangles of the complex
+/// is a hole through a sheet, a tunnel of the complex; where the input
+/// holds the triangles that close it (round_triangles, held_by_input) it
+/// is no tunnel of the shape but what is left of a sheet whose Voronoi
+/// faces were dropped (a wall thinner than the samples' spacing), which
+/// link_condition would have closed had a collapse on its rim met it as a
+/// loop of three edges before the budget stopped them; it is closed.
+/// Shortest loops first: the rim round a sheet with holes bounds no
+/// triangles until its holes are closed, and then it does, so it is never
+/// closed over the sheet. Returns the loops closed.
+std::size_t close_sheet_holes(Complex& k, const QuadricOptions& o) {
+  std::vector<std::vector<Index>> loops = rim_loops(k);
+  const auto length = [&k](const std::vector<Index>& loop) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < loop.size(); ++i)
+      sum += (k.sphere[std::size_t(loop[i])].head<3>() - k.sphere[std::size_t(loop[(i + 1) % loop.size()])].head<3>())
+                 .norm();
+    return sum;
+  };
+  std::vector<std::pair<double, std::size_t>> order;
+  for (std::size_t i = 0; i < loops.size(); ++i) order.push_back({length(loops[i]), i});
+  std::sort(order.begin(), order.end());
+  Boundaries boundaries(k);
+  std::size_t closed = 0;
+  for (const auto& [ignored, i] : order) {
+    const std::vector<Index>& loop = loops[i];
+    if (boundaries.bounds(loop)) continue;
+    const std::vector<Triangle> disc = round_triangles(k, loop);
+    bool held = !disc.empty();
+    for (const Triangle& t : disc)
+      held = held && t[0] != t[1] && t[1] != t[2] && !k.triangles.count(t) && held_by_input(k, o, t);
+    if (!held) continue;
+    for (const Triangle& t : disc) k.add_triangle(t), boundaries.add(t);
+    ++closed;
+  }
+  return closed;
+}
+
 struct Candidate {
   double cost = 0.0;
   Index u = 0, v = 0;
@@ -589,7 +728,10 @@ MedialMesh quadric_medial_mesh(const MedialGraph& graph, const QuadricOptions& o
   if (!k.sphere.empty()) {
     Simplifier simplifier(k, o);
     simplifier.run(r);
-    if (o.depth && o.inside_samples > 0) r.bridges_closed = close_bridged_sheets(k, o);
+    if (o.depth && o.inside_samples > 0) {
+      r.bridges_closed = close_bridged_sheets(k, o);
+      r.holes_closed = close_sheet_holes(k, o);
+    }
   }
   r.euler_after = k.euler_characteristic();
   if (report != nullptr) *report = r;

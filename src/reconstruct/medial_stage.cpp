@@ -254,7 +254,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
         spikes += part_spikes[p];
         q.collapses += pr.collapses, q.refused_by_link += pr.refused_by_link;
         q.loops_closed += pr.loops_closed, q.loops_closed_inside += pr.loops_closed_inside;
-        q.bridges_closed += pr.bridges_closed, q.tips_held += pr.tips_held;
+        q.bridges_closed += pr.bridges_closed, q.holes_closed += pr.holes_closed, q.tips_held += pr.tips_held;
         q.euler_before += pr.euler_before, q.euler_after += pr.euler_after;
       }
       mesh = joined_part_meshes(meshes);
@@ -266,8 +266,8 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
                              mesh.spheres.size(), mesh.triangles.size(), mesh.edges.size(), mesh.isolated.size(),
                              m.budget, q.collapses, q.refused_by_link, q.loops_closed,
                              inside_samples > 0 ? fmt::format(", {} of them inside the input, not the balls; {} bridged "
-                                                              "sheets closed",
-                                                              q.loops_closed_inside, q.bridges_closed)
+                                                              "sheets and {} holes through sheets closed",
+                                                              q.loops_closed_inside, q.bridges_closed, q.holes_closed)
                                                 : std::string(),
                              q.euler_before, q.euler_after));
     if (o.progress && q.tips_held > 0)

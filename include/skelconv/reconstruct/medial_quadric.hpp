@@ -48,7 +48,12 @@
 // closed even where the balls do not cover it: a loop of three edges at a
 // collapse, and after the collapses each side of a tube edge that bridges
 // a hole between two spheres of sheets (the loop of the edge and the
-// shortest way back along the hole's rim, closed by a fan of triangles).
+// shortest way back along the hole's rim, closed by a fan of triangles),
+// then each hole through a sheet that the collapses left (the budget
+// reached before a collapse on its rim): a loop of the sheets' rims (edges on one triangle)
+// that bounds no triangles of the complex (over GF(2), shortest loops
+// first, so that a sheet's outer rim, which bounds the sheet once its holes
+// are closed, is never closed over it).
 //
 // Where given (QuadricOptions::reach_points), the ball nearest a sample at
 // a thin protrusion's end that no ball reaches keeps its place: a collapse
@@ -110,7 +115,8 @@ struct QuadricOptions {
   /// no tunnel of the shape; it is a hole that pruning or a wall thinner
   /// than the samples' spacing punched into a sheet, wider than the balls
   /// on its rim. After the collapses, each side of a tube edge between two
-  /// spheres of sheets is closed the same way (the header). Off (0) by
+  /// spheres of sheets is closed the same way, and then each hole through a
+  /// sheet the collapses left (the header). Off (0) by
   /// default: the sum of fields covers most such holes, and
   /// medial_stage.cpp asks for it only where the reconstruction came back
   /// with a tunnel too many.
@@ -146,6 +152,7 @@ struct QuadricReport {
   std::size_t loops_closed = 0;  ///< covered loops the collapses closed (the header)
   std::size_t loops_closed_inside = 0;  ///< of those, loops inside the input, not the balls (inside_samples)
   std::size_t bridges_closed = 0;       ///< sheets closed across a tube edge after the collapses (inside_samples)
+  std::size_t holes_closed = 0;         ///< holes through sheets closed after the collapses (inside_samples)
   std::size_t tips_held = 0;            ///< balls held in place for their reach points (reach_points)
 };
 

@@ -226,9 +226,10 @@ struct MedialOptions {
   /// cavity as a defect.
   GuardFilledCavities guard_filled_cavities = GuardFilledCavities::air;
   /// Where the fitted result has more tunnels than the input, the medial
-  /// mesh is simplified again with every loop of three edges closed whose
-  /// triangle the input holds (QuadricOptions::inside_samples: the input's
-  /// depth positive on a grid of this many steps a side), fitted again, and
+  /// mesh is simplified again with every loop of three edges, tube edge
+  /// across a sheet's hole and hole through a sheet closed whose triangles
+  /// the input holds (QuadricOptions::inside_samples: the input's depth
+  /// positive on a grid of this many steps a side), fitted again, and
   /// kept if its topology is closer to the input's (medial_stage.cpp;
   /// docs/reconstruction_medial.md, "Tunnels too many"). 0 turns it off.
   int close_inside_samples = 4;
