@@ -727,6 +727,7 @@ void undo_topology_loss(FitInProgress& fit, const TopologyError& topology_error,
     guard.held.clear();
     guard.localize_left = 0;
     r.rounds_kept = kept;
+    if (good) r.back_to_repair = repaired;
     std::size_t stage = 0, in_stage = 0;
     back_to(kept, stage, in_stage);
     lambda = o.initial_damping;

@@ -243,6 +243,12 @@ struct MedialFitReport {
   /// When the fit went back to an earlier round to keep the topology: how
   /// many rounds (of both stages) it kept.
   std::optional<std::size_t> rounds_kept;
+  /// When the fit went back after a failed repair (holding spheres did not
+  /// keep the topology): true where it went back to the repair's last round
+  /// that keeps it (closer to the points), false where to the round the
+  /// first bisection left it (then rounds_kept counts rounds before the
+  /// repair).
+  std::optional<bool> back_to_repair;
 };
 
 /// Whether a stage of the fit whose objective went through `values` (before
