@@ -929,6 +929,57 @@ TEST(MedialFit, ARepairWhoseDefectOpensAgainStopsAtItsFirstRound) {
   EXPECT_GE(after_repair, 2) << "the case must be one where the repair's end costs meshings";
 }
 
+// The same two balls, the topology test failing where A's radius is above
+// 1.15 or B's within 10⁻⁶ of 1.3 (two thin places that each open a hole;
+// the fit left alone takes both there). The fit's first round fails, so the
+// first bisection leaves it at its start; that round's step is split over
+// the spheres (hold_group 1): A is held at 1 and B takes its step (1.3296,
+// passes). The repair runs on: its first round (B at 1.2995) is watched and
+// passes, its next ones (1.2999994, 1.2999999994) do not, and no repair is
+// left (topology_repairs 1). The fit goes back with each step tested (none
+// here: topology_checks 0), so the result is the round it goes back to: the
+// repair's last round that passes (B 1.2995, A 1), its surface points
+// closer than at the start, found by bisection over the repair's rounds;
+// not the start (both at 1), which threw away every round the repair
+// fitted. Neither is farther from the input's topology than the start.
+TEST(MedialFit, AFailedRepairGoesBackToItsLastRoundThatKeepsTheTopologyNotToTheStart) {
+  MedialMesh balls;
+  balls.spheres = {Vec4(0.0, 0.0, 0.0, 1.0), Vec4(10.0, 0.0, 0.0, 1.0)};
+  balls.isolated = {0, 1};
+  std::vector<WeightedPoint> points;
+  for (const Vec3& centre : {Vec3(0, 0, 0), Vec3(10, 0, 0)})
+    for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, -1, 0), Vec3(0, 0.6, 0.8), Vec3(-0.8, 0, 0.6)})
+      points.push_back({centre + 1.3 * d, 1.0});
+  const ReconstructOptions o;
+  const MedialField field_of = written_field(o);
+  MedialFitOptions fit;
+  fit.fit_centres = false;
+  fit.newton_steps = 0;  // the rounds on first-order distances
+  fit.stall_fall = 0.0;  // with A held, B's rounds lower the objective little
+  fit.hold_group = 1;
+  fit.topology_repairs = 1;
+  fit.topology_checks = 0;  // the tested resume takes no step
+  MedialFitReport report;
+  const TopologyError two_places = [](const MedialMesh& m) {
+    const double a = m.spheres[0].w(), b = m.spheres[1].w();
+    return a > 1.15 || std::abs(b - 1.3) < 1e-6 ? 1LL : 0LL;
+  };
+  const MedialMesh free = fit_medial_mesh(balls, points, {}, field_of, fit, &report);
+  ASSERT_EQ(two_places(free), 1) << "the fit left alone must open a hole";
+  ASSERT_LT(std::abs(free.spheres[1].w() - 1.3), 1e-6) << "the fit left alone must open both";
+  std::vector<std::string> lines;
+  const auto progress = [&lines](std::string_view line) { lines.emplace_back(line); };
+  const MedialMesh kept = fit_medial_mesh(balls, points, {}, field_of, fit, &report, progress, two_places);
+  EXPECT_EQ(two_places(kept), 0);
+  EXPECT_EQ(kept.spheres[0].w(), 1.0) << "A stays where the repair held it";
+  EXPECT_GT(kept.spheres[1].w(), 1.29) << "B where the repair's last round that passes left it, not at the start's 1";
+  EXPECT_LT(kept.spheres[1].w(), 1.3 - 1e-6);
+  EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [](const std::string& line) {
+    return line.find("the repair's round") != std::string::npos && line.find("resumed after round") != std::string::npos;
+  })) << "the progress line must say it went back to the repair's round";
+}
+
+
 // --- The radii kept as a medial axis's (medial_slope.hpp).
 
 // A chain a–b–c, 0.1 apart, whose radii the fit left at 2, 1.5 and 0.1,

@@ -152,7 +152,11 @@ std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh
     for (std::size_t k = 0; k < m.fit.worst.size(); ++k)
       text += fmt::format("{}{:.6g}", k == 0 ? "" : ", ", m.fit.worst[k]);
     // The rounds kept when the fit went back to keep the topology, else null.
-    text += "], \"fit_rounds_kept\": " + (m.fit.rounds_kept ? fmt::format("{}", *m.fit.rounds_kept) : "null") + "}";
+    text += "], \"fit_rounds_kept\": " + (m.fit.rounds_kept ? fmt::format("{}", *m.fit.rounds_kept) : "null");
+    // After a failed repair, whether the fit went back to the repair's last
+    // round that keeps the topology; else null.
+    text += ", \"fit_back_to_repair\": " +
+            (m.fit.back_to_repair ? std::string(*m.fit.back_to_repair ? "true" : "false") : "null") + "}";
   }
   return text + "}\n";
 }

@@ -678,38 +678,90 @@ void undo_topology_loss(FitInProgress& fit, const TopologyError& topology_error,
     for (std::size_t i = stage + 1; i < plan.size(); ++i) plan[i].values->clear();
     now = evaluate(mesh, points, field_of, plan[stage].stage.newton_steps);
   };
-  // Where the repairs fail, the fit goes back to where the first
-  // bisection left it, nothing held, as if no repair had been tried.
+  // The last round of history (after `good`, which passes) that passes,
+  // by bisection (a topology lost stays lost in the rounds after, mostly;
+  // one meshing a test); `lost` is the first that does not.
+  const auto last_passing = [&](std::size_t good, std::size_t& lost) {
+    lost = history.size() - 1;
+    while (lost - good > 1) {
+      const std::size_t middle = (good + lost) / 2;
+      (topology_error(at_round(middle)) <= allowed ? good : lost) = middle;
+    }
+    return good;
+  };
+  // Where the repairs fail, the fit goes back, nothing held, and tests
+  // each step from there: to the last round of the repairs that passed
+  // (`good`, of the history as the repairs left it) where its surface
+  // points are closer than at the round the first bisection left it
+  // (first_kept), else to that round, as if no repair had been tried.
+  // Both are within `allowed`, so neither is farther from the input's
+  // topology than the unfitted spheres. Going back to first_kept alone
+  // threw away every round the repair fitted (CGAL's homer with its
+  // vertices shuffled: the repair's rounds reached an RMS distance of
+  // 0.0008 and its end lost the topology; the fit went back to its
+  // unfitted spheres, 0.0094, and its tested steps were spent by 0.0076).
   std::optional<std::size_t> first_kept;
   std::size_t first_lost = 0, first_last = 0;
   std::vector<std::vector<Vec4>> first_history;
   std::vector<std::vector<double>> first_values;
-  const auto fall_back = [&] {
-    kept = *first_kept, history = std::move(first_history);
-    for (std::size_t i = 0; i < plan.size(); ++i) *plan[i].values = std::move(first_values[i]);
+  const auto fall_back = [&](std::optional<std::size_t> good, std::size_t good_lost) {
+    // The candidates' distances measured alike: with the Newton steps of
+    // the fit's last stage, whatever stage each round belongs to.
+    const int steps = plan.back().stage.newton_steps;
+    double first_rms = 0.0, good_rms = 0.0;
+    if (good) {
+      MedialMesh first = mesh;
+      first.spheres = first_history[*first_kept];
+      first_rms = evaluate(first, points, field_of, steps).rms;
+      good_rms = evaluate(at_round(*good), points, field_of, steps).rms;
+    }
+    // Ties to the earlier round: the same choice on every machine.
+    const bool repaired = good && good_rms < first_rms;
+    const std::size_t good_last = history.size() - 1;
+    if (repaired) {
+      kept = *good;
+    } else {
+      kept = *first_kept, history = std::move(first_history);
+      for (std::size_t i = 0; i < plan.size(); ++i) *plan[i].values = std::move(first_values[i]);
+    }
     guard.held.clear();
     guard.localize_left = 0;
     r.rounds_kept = kept;
+    if (good) r.back_to_repair = repaired;
     std::size_t stage = 0, in_stage = 0;
     back_to(kept, stage, in_stage);
     lambda = o.initial_damping;
-    if (progress)
-      progress(fmt::format("medial fit: round {} of {} takes the topology farther from the input's than round "
-                           "{}; resumed after round {} (RMS distance {:.4g}) with each step tested",
-                           first_lost, first_last, kept, kept, now.rms));
+    if (progress) {
+      if (repaired)
+        progress(fmt::format("medial fit: the repair's round {} of {} takes the topology farther from the input's "
+                             "than round {}; resumed after round {} (RMS distance {:.4g}, closer than round {} "
+                             "before the repair, {:.4g}) with each step tested",
+                             good_lost, good_last, kept, kept, good_rms, *first_kept, first_rms));
+      else
+        progress(fmt::format("medial fit: round {} of {} takes the topology farther from the input's than round "
+                             "{}; resumed after round {} (RMS distance {:.4g}{}) with each step tested",
+                             first_lost, first_last, kept, kept, now.rms,
+                             good ? fmt::format("; the repair's last round that kept it, round {}, no closer: "
+                                                "{:.4g} against {:.4g}",
+                                                *good, good_rms, first_rms)
+                                  : std::string()));
+    }
     run_stages(stage, int(in_stage), guard);
   };
+  // The last round of the current repair known to pass (its partial step,
+  // then its watched rounds), while its end does not.
+  std::optional<std::size_t> repair_passed;
   for (int repair = 0; final_error > allowed; ++repair) {
     if (first_kept && (repair >= o.topology_repairs || guard.localize_left < descent_meshings(guard))) {
-      fall_back();
+      // The last repair's end is farther: its last round that passes.
+      std::size_t good_lost = 0;
+      const std::size_t good = last_passing(*repair_passed, good_lost);
+      fall_back(good, good_lost);
       break;
     }
     const std::size_t last = history.size() - 1;
     std::size_t lost = last;
-    while (lost - kept > 1) {
-      const std::size_t middle = (kept + lost) / 2;
-      (topology_error(at_round(middle)) <= allowed ? kept : lost) = middle;
-    }
+    kept = last_passing(kept, lost);
     if (!first_kept) {
       first_kept = kept, first_lost = lost, first_last = last, first_history = history;
       for (const Planned& p : plan) first_values.push_back(*p.values);
@@ -726,7 +778,8 @@ void undo_topology_loss(FitInProgress& fit, const TopologyError& topology_error,
     if (repair < o.topology_repairs)
       part = localize_step(at_round(kept), step, guard, o.max_radius_slope, clearance);
     if (!part) {
-      fall_back();
+      // After a repair, `kept` is its last round that passes.
+      fall_back(repair > 0 ? std::optional<std::size_t>(kept) : std::nullopt, lost);
       break;
     }
     std::size_t stage = 0, in_stage = 0;
@@ -753,10 +806,12 @@ void undo_topology_loss(FitInProgress& fit, const TopologyError& topology_error,
     // holding did not keep it: another search from that round fails the
     // same way on the real shapes (CGAL's femur: the same round again, the
     // 5 meshings left holding no sphere more), so the fit goes back.
+    // Its partial step (round `kept`) passed.
     if (holding.reopened) {
-      fall_back();
+      fall_back(kept, *holding.watched_round);
       break;
     }
+    repair_passed = holding.watched_round ? *holding.watched_round : kept;
     final_error = holding.watched_round == history.size() - 1 ? holding.watched_error : topology_error(mesh);
   }
 }

@@ -44,9 +44,12 @@ def read_off(path):
     if not words[0].upper().endswith("OFF"):
         raise SystemExit(f"{path}: not an OFF file")
     nv, nf = int(words[1]), int(words[2])
+    # COFF: each vertex line carries its colour, RGBA, after x y z (CGAL's
+    # dino); the copies are written without it.
+    width = 7 if words[0].upper() == "COFF" else 3
     at = 4
-    v = np.array(words[at:at + 3 * nv], dtype=float).reshape(nv, 3)
-    at += 3 * nv
+    v = np.array(words[at:at + width * nv], dtype=float).reshape(nv, width)[:, :3]
+    at += width * nv
     faces = []
     for _ in range(nf):
         n = int(words[at])

@@ -215,8 +215,11 @@ struct MedialFitOptions {
   /// topology, holds the spheres that took it there and runs on untested
   /// (each time: a bisection over the rounds, the spheres found, the rest
   /// of the rounds fitted, the end meshed). Where that leaves the end
-  /// farther still, the fit goes back to where the first bisection left it,
-  /// nothing held, and tests each step (topology_checks).
+  /// farther still, the fit goes back, nothing held, and tests each step
+  /// (topology_checks): to the repair's last round that keeps the topology
+  /// (found by bisection over its rounds) where its surface points are
+  /// closer than at the round the first bisection left it, else to that
+  /// round.
   int topology_repairs = 2;
   /// After a repair, the fit's first this many rounds are each meshed;
   /// where one is farther from the input's topology (the defect opened
@@ -243,6 +246,12 @@ struct MedialFitReport {
   /// When the fit went back to an earlier round to keep the topology: how
   /// many rounds (of both stages) it kept.
   std::optional<std::size_t> rounds_kept;
+  /// When the fit went back after a failed repair (holding spheres did not
+  /// keep the topology): true where it went back to the repair's last round
+  /// that keeps it (closer to the points), false where to the round the
+  /// first bisection left it (then rounds_kept counts rounds before the
+  /// repair).
+  std::optional<bool> back_to_repair;
 };
 
 /// Whether a stage of the fit whose objective went through `values` (before
