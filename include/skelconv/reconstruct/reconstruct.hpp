@@ -238,9 +238,9 @@ struct MedialOptions {
   /// at its mouth along a stretch, both ends open: homer's mouth) is
   /// plugged by an isolated sphere where taking a small box of the meshed
   /// surface's triangles out lowers its genus, one tunnel at a time, kept
-  /// where the topology defects drop and the surface's farthest point from
-  /// the input comes no farther than it was or than a facet of the measure
-  /// (plug_tunnels.hpp;
+  /// where the topology defects drop and the farthest distance between the
+  /// surface and the input stays within the larger of what it was and two
+  /// facets of the measure (plug_tunnels.hpp;
   /// docs/reconstruction_medial.md, "Tunnels through air"). False turns it
   /// off.
   bool plug_air_tunnels = true;
