@@ -27,6 +27,7 @@
 #include "skelconv/reconstruct/reconstruct.hpp"
 #include "skelconv/skeleton/skeleton_file.hpp"
 #include "src/reconstruct/fill_cavities.hpp"
+#include "src/reconstruct/plug_tunnels.hpp"
 #include "src/reconstruct/medial_step.hpp"
 #include "src/reconstruct/tube_ends.hpp"
 #include "src/reconstruct/unreached_tips.hpp"
@@ -1493,6 +1494,85 @@ TEST(FillCavities, TheGuardCountsABubbleOfAirAsFilledAndAHollowInTheSolidAsADefe
   EXPECT_FALSE(hollow_input[0].air);
   EXPECT_EQ(counted(hollow_input, GuardFilledCavities::air), (std::pair<std::size_t, long long>(4, 8)));
   EXPECT_EQ(counted(hollow_input, GuardFilledCavities::all), (std::pair<std::size_t, long long>(3, 6)));
+}
+
+// --- Tunnels through air (plug_tunnels.hpp).
+
+// A ring of 12 spheres of radius 0.35 on a circle of radius 0.5 about the
+// z axis, joined by tube edges: a torus whose hole, 0.13 across at its
+// narrowest (the meshed vertices nearest the axis, 3.3 facets), is a pipe of
+// air, as homer's mouth sealed at its front is. Meshed as the guard meshes
+// it (facet 0.04): one component, χ 0.
+MedialMesh narrow_ring() {
+  MedialMesh ring;
+  constexpr int n = 12;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / n;
+    ring.spheres.push_back(Vec4(0.5 * std::cos(a), 0.5 * std::sin(a), 0.0, 0.35));
+    ring.edges.push_back({std::int32_t(i), std::int32_t((i + 1) % n)});
+  }
+  return ring;
+}
+
+// Taking out a triangle lowers no genus; taking out the triangles whose
+// centroids lie within 0.3 of the z axis (the hole's wall, a band round the
+// handle: the hole's narrowest ring is 0.067 from the axis, the tube's far
+// side 0.067 + 0.7) lowers it by one. A band round a capsule's middle (a
+// tube edge from x = −0.5 to 0.5, radius 0.2; the triangles with |x| <
+// 0.1) cuts it in two and lowers no genus.
+TEST(PlugTunnels, ABandRoundAHandleLowersTheGenusADiscNot) {
+  const TriangleMesh ring = meshed_in_box(narrow_ring(), 0.04);
+  ASSERT_EQ(mesh_topology(ring).components, 1u);
+  ASSERT_EQ(mesh_topology(ring).euler_characteristic, 0);
+  EXPECT_EQ(skelconv::detail::genus_drop_doubled(ring, {0}), 0);
+  std::vector<std::int32_t> band;
+  for (std::size_t t = 0; t < ring.triangles.size(); ++t) {
+    Vec3 centroid = Vec3::Zero();
+    for (const std::int32_t v : ring.triangles[t]) centroid += ring.vertices[std::size_t(v)] / 3.0;
+    if (centroid.head<2>().norm() < 0.3) band.push_back(std::int32_t(t));
+  }
+  ASSERT_FALSE(band.empty());
+  EXPECT_EQ(skelconv::detail::genus_drop_doubled(ring, band), 2);
+
+  MedialMesh stick;
+  stick.spheres = {Vec4(-0.5, 0.0, 0.0, 0.2), Vec4(0.5, 0.0, 0.0, 0.2)};
+  stick.edges = {{0, 1}};
+  const TriangleMesh capsule = meshed_in_box(stick, 0.04);
+  ASSERT_EQ(mesh_topology(capsule).euler_characteristic, 2);
+  std::vector<std::int32_t> middle;
+  for (std::size_t t = 0; t < capsule.triangles.size(); ++t) {
+    double x = 0.0;
+    for (const std::int32_t v : capsule.triangles[t]) x += capsule.vertices[std::size_t(v)].x() / 3.0;
+    if (std::abs(x) < 0.1) middle.push_back(std::int32_t(t));
+  }
+  ASSERT_FALSE(middle.empty());
+  EXPECT_EQ(skelconv::detail::genus_drop_doubled(capsule, middle), 0);
+}
+
+// Where the input has no tunnel there (a solid ball of radius 1.5, an
+// octahedron's surface), the ring's hole is a tunnel through air too many:
+// with boxes of 0.2 a side (5 facets: the hole's wall is wider than the
+// boxes of 2 to 4 facets the medial stage tries on homer's sub-facet
+// mouth), a plug is found near the z axis, smaller than the tube, and the
+// ring meshed again with that isolated sphere has the ball's topology (χ
+// 2). Where the input is the ring itself, its hole is the input's own
+// tunnel and nothing is plugged.
+TEST(PlugTunnels, APipeOfAirTheInputDoesNotHaveIsPlugged) {
+  const double h = 0.04;
+  const TriangleMesh ring = meshed_in_box(narrow_ring(), h);
+  ASSERT_EQ(mesh_topology(ring).euler_characteristic, 0);
+  TriangleMesh ball;
+  add_octahedron(ball, Vec3::Zero(), 1.5, false);
+  const std::vector<Vec4> plugs = skelconv::detail::air_tunnel_plugs(ring, ball, 2.5 * h);
+  ASSERT_FALSE(plugs.empty());
+  EXPECT_LT(plugs[0].head<2>().norm(), h);
+  EXPECT_LT(std::abs(plugs[0].z()), 2.0 * h);
+  EXPECT_LT(plugs[0].w(), 0.35);
+  const MeshTopology plugged = mesh_topology(meshed_in_box(with_sphere(narrow_ring(), plugs[0]), h));
+  EXPECT_EQ(plugged.components, 1u);
+  EXPECT_EQ(plugged.euler_characteristic, 2);
+
+  EXPECT_TRUE(skelconv::detail::air_tunnel_plugs(ring, ring, 2.5 * h).empty());
 }
 
 // Room within the budget for a cavity's sphere: a chain A–B–C–D–E along x

@@ -253,6 +253,10 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
           "The medial fit's topology guard counts every cavity of a fitted round as a defect, bubbles of a "
           "crease's air too (docs/reconstruction_medial.md, \"The guard counting a crease's bubbles of air as filled\")")
       ->excludes(all_filled);
+  command->add_flag_callback(
+      "--no-medial-plug-air-tunnels", [&options] { options.medial.plug_air_tunnels = false; },
+      "Where the medial result has more tunnels than the input, leave a tunnel through a pipe of air unplugged "
+      "(by default an isolated sphere plugs it: docs/reconstruction_medial.md, \"Tunnels through air\")");
   command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees of the curve path (default 90)");
   command->add_option("--prune-span", options.prune_span,
                       "Also prune Voronoi vertices whose contact samples span less than this × the diagonal "

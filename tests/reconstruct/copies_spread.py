@@ -144,12 +144,14 @@ def main():
         for seed in range(rotations):
             r, axis, angle = rotation(seed)
             m = a.workdir / stem / f"rotated{seed}.off"
+            m.parent.mkdir(parents=True, exist_ok=True)
             write_off(m, v @ r.T, faces)
             copies.append((f"rotated {seed} ({angle:.2f} rad about {np.round(axis, 2).tolist()})", m))
         for k, spec_rot in enumerate(a.axis_angle):
             x, y, z, angle = (float(w) for w in spec_rot.split(","))
             r, axis, angle = rotation(None, (x, y, z), angle)
             m = a.workdir / stem / f"rotated_given{k}.off"
+            m.parent.mkdir(parents=True, exist_ok=True)
             write_off(m, v @ r.T, faces)
             copies.append((f"rotated given{k} ({angle:.2f} rad about {np.round(axis, 2).tolist()})", m))
         first = None

@@ -233,6 +233,17 @@ struct MedialOptions {
   /// kept if its topology is closer to the input's (medial_stage.cpp;
   /// docs/reconstruction_medial.md, "Tunnels too many"). 0 turns it off.
   int close_inside_samples = 4;
+  /// Where the result still has more tunnels than the input, a tunnel
+  /// through a pipe of air that the input does not have (a crease sealed
+  /// at its mouth along a stretch, both ends open: homer's mouth) is
+  /// plugged by an isolated sphere where taking a small box of the meshed
+  /// surface's triangles out lowers its genus, one tunnel at a time, kept
+  /// where the topology defects drop and the farthest distance between the
+  /// surface and the input stays within the larger of what it was and two
+  /// facets of the measure (plug_tunnels.hpp;
+  /// docs/reconstruction_medial.md, "Tunnels through air"). False turns it
+  /// off.
+  bool plug_air_tunnels = true;
   MedialFitOptions fit;
 };
 
