@@ -419,6 +419,17 @@ TEST(TubeEnds, ASharpTipTheMeshFallsShortOfGetsATubeOutToIt) {
   thick.spheres[0] = Vec4(0.6, 0, 0, 0.3);
   EXPECT_EQ(detail::reach_unreached_tips(thick, tips, 0.05, 1.0, 0.02, cone), 0u);
   EXPECT_EQ(thick.spheres.size(), 3u);
+  // A round end: a capsule of radius 0.1 along the x axis to x = 0.9, its
+  // tip (1, 0, 0) 0.22 beyond a ball of radius 0.06 at (0.72, 0, 0) (a
+  // ball the collapses left short of it), is 0.02 deep 0.02 short of the
+  // tip, not under half of 0.02: nothing added.
+  const auto capsule = [](const Vec3& p) {
+    return 0.1 - std::hypot(std::max(std::abs(p.x()) - 0.9, 0.0), std::hypot(p.y(), p.z()));
+  };
+  reconstruct::MedialMesh round = sheet(0.06);
+  round.spheres[0] = Vec4(0.72, 0, 0, 0.06);
+  EXPECT_EQ(detail::reach_unreached_tips(round, tips, 0.05, 1.0, 0.02, capsule), 0u);
+  EXPECT_EQ(round.spheres.size(), 3u);
   // The way to the apex crosses a gap in the input (0.83 < x < 0.87): no
   // tube out of it.
   const auto notched = [&cone](const Vec3& p) { return std::min(cone(p), std::abs(p.x() - 0.85) - 0.02); };

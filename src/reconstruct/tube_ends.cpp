@@ -139,6 +139,11 @@ std::size_t reach_unreached_tips(reconstruct::MedialMesh& mesh, const std::vecto
     const double length = (tip.point - c).norm();
     const Vec3 u = (tip.point - c) / length;
     const Vec3 end = tip.point - std::min(radius, 0.5 * length) * u;
+    // A sharp tip: one radius short of it the input is less than half a
+    // radius deep (a cone under 30° half-angle); a round end of any width
+    // is about a radius deep there, and the surface of the sphere nearest
+    // it rounds it as it is.
+    if (!(depth(end) < 0.5 * radius)) continue;
     bool inside = true;
     for (int k = 0; k <= 16 && inside; ++k) inside = depth(c + (k / 16.0) * (end - c)) >= 0.0;
     if (!inside) continue;

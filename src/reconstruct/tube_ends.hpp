@@ -53,9 +53,11 @@ std::size_t extend_tube_ends(reconstruct::MedialMesh& mesh, double factor, doubl
 /// stops the medial graph about a spacing short of it (on a tip thinner
 /// than the spacing, at balls barely inside the input), at a sheet's
 /// corner or a tube end whose surface is round and about as wide as its
-/// ball, and no fit brings a sharp tip out of that. The segment must run
-/// inside the input (`depth`, the input's signed distance, at 17 points);
-/// elsewhere nothing is added. Returns how many edges were added (each
+/// ball, and no fit brings a sharp tip out of that. Only a sharp tip: at
+/// the new sphere's centre the input (`depth`, its signed distance) must be
+/// less than half `radius` deep (a cone under 30° half-angle; a round end
+/// is about `radius` deep there). The segment must run inside the input
+/// (at 17 points). Elsewhere nothing is added. Returns how many edges were added (each
 /// with one new sphere).
 std::size_t reach_unreached_tips(reconstruct::MedialMesh& mesh, const std::vector<reconstruct::ReachPoint>& tips,
                                  double reach, double thinness, double radius,
