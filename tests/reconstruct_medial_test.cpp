@@ -369,6 +369,77 @@ TEST(TubeEnds, ATaperingTipsSphereBeyondGoesToWhereTheInputEnds) {
   EXPECT_NEAR((c.spheres[3] - Vec4(0.1, 0.02, 0, 0.1)).norm(), 0.0, 1e-15);
 }
 
+// A drop's tip: a cone of half-angle asin 0.17 (about 10°) along the x
+// axis, apex at x = 1. Its medial axis runs to the apex, the radius falling
+// to 0, but the samples' spacing stops it short: the simplified mesh ends
+// at a sheet's corner, a ball of radius 0.06 at (0.7, 0.03, 0) whose centre
+// is 0.021 deep (as CGAL's drop's, 0.0085 deep with radius 0.037: the
+// Voronoi balls near a tip thinner than the spacing are barely inside).
+// The apex is 0.3015 − 0.06 = 0.2415 beyond it: more than the reach (0.05)
+// and the ball's radius. The corner gets a tube edge towards the apex,
+// ending one floor radius (0.02) short of it, with a sphere of that radius.
+TEST(TubeEnds, ASharpTipTheMeshFallsShortOfGetsATubeOutToIt) {
+  const double sin_a = 0.17, cos_a = std::sqrt(1 - sin_a * sin_a);
+  const auto cone = [&](const Vec3& p) {
+    return std::min((1.0 - p.x()) * sin_a - std::hypot(p.y(), p.z()) * cos_a, p.x() + 1.0);
+  };
+  const Vec3 apex(1, 0, 0), corner(0.7, 0.03, 0);
+  ASSERT_NEAR(cone(corner), 0.3 * sin_a - 0.03 * cos_a, 1e-15);
+  ASSERT_LT(cone(corner), 0.06) << "the corner's ball must reach out of the cone, as a tip's do";
+  const auto sheet = [&corner](double radius) {
+    reconstruct::MedialMesh m;
+    m.spheres = {Vec4(corner.x(), corner.y(), corner.z(), radius), Vec4(0.3, 0.05, 0, 0.1), Vec4(0.3, -0.05, 0, 0.1)};
+    m.triangles = {{0, 1, 2}};
+    return m;
+  };
+  const std::vector<reconstruct::ReachPoint> tips{{0, apex}};
+  reconstruct::MedialMesh m = sheet(0.06);
+  EXPECT_EQ(detail::reach_unreached_tips(m, tips, 0.05, 1.0, 0.02, cone), 1u);
+  ASSERT_EQ(m.spheres.size(), 4u);
+  ASSERT_EQ(m.edges.size(), 1u);
+  EXPECT_EQ(m.edges[0], (std::array<std::int32_t, 2>{0, 3}));
+  EXPECT_EQ(m.triangles.size(), 1u);
+  const Vec3 end = m.spheres[3].head<3>();
+  EXPECT_EQ(m.spheres[3].w(), 0.02);
+  // On the line from the corner to the apex, 0.02 short of the apex.
+  EXPECT_NEAR((apex - end).norm(), 0.02, 1e-15);
+  EXPECT_NEAR((apex - end).cross(apex - corner).norm(), 0.0, 1e-15);
+  EXPECT_GT((apex - end).dot(apex - corner), 0.0);
+  EXPECT_GE(cone(end), 0.0);
+  // A ball reaching within the reach of the apex (0.04 − 0.005 short):
+  // nothing added.
+  reconstruct::MedialMesh reached = sheet(0.06);
+  reached.spheres.push_back(Vec4(0.96, 0, 0, 0.005));
+  reached.edges.push_back({0, 3});
+  EXPECT_EQ(detail::reach_unreached_tips(reached, tips, 0.05, 1.0, 0.02, cone), 0u);
+  EXPECT_EQ(reached.spheres.size(), 4u);
+  // Thicker than it is long beyond its ball (a ball of radius 0.3 at
+  // x = 0.6, 0.1 short of the apex: under thinness 1 × its radius):
+  // nothing added.
+  reconstruct::MedialMesh thick = sheet(0.3);
+  thick.spheres[0] = Vec4(0.6, 0, 0, 0.3);
+  EXPECT_EQ(detail::reach_unreached_tips(thick, tips, 0.05, 1.0, 0.02, cone), 0u);
+  EXPECT_EQ(thick.spheres.size(), 3u);
+  // A round end: a capsule of radius 0.1 along the x axis to x = 0.9, its
+  // tip (1, 0, 0) 0.22 beyond a ball of radius 0.06 at (0.72, 0, 0) (a
+  // ball the collapses left short of it), is 0.02 deep 0.02 short of the
+  // tip, not under half of 0.02: nothing added.
+  const auto capsule = [](const Vec3& p) {
+    return 0.1 - std::hypot(std::max(std::abs(p.x()) - 0.9, 0.0), std::hypot(p.y(), p.z()));
+  };
+  reconstruct::MedialMesh round = sheet(0.06);
+  round.spheres[0] = Vec4(0.72, 0, 0, 0.06);
+  EXPECT_EQ(detail::reach_unreached_tips(round, tips, 0.05, 1.0, 0.02, capsule), 0u);
+  EXPECT_EQ(round.spheres.size(), 3u);
+  // The way to the apex crosses a gap in the input (0.83 < x < 0.87): no
+  // tube out of it.
+  const auto notched = [&cone](const Vec3& p) { return std::min(cone(p), std::abs(p.x() - 0.85) - 0.02); };
+  reconstruct::MedialMesh gap = sheet(0.06);
+  EXPECT_EQ(detail::reach_unreached_tips(gap, tips, 0.05, 1.0, 0.02, notched), 0u);
+  EXPECT_EQ(gap.spheres.size(), 3u);
+  EXPECT_TRUE(gap.edges.empty());
+}
+
 /// A ring of n balls of radius rho around the z axis at distance R: the
 /// medial axis of a torus (a wall around a bore, cut across), each ball
 /// touching the torus on its outer and inner side and above and below.

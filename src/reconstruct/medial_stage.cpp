@@ -167,6 +167,15 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
       }
     shares = part_budgets(areas, m.budget, m.part_minimum_budget);
   }
+  // With MedialOptions::tip_end_tube, the sharp tips the simplified mesh
+  // still falls short of get a tube out to them (tube_ends.hpp,
+  // reach_unreached_tips), its end at the fit's radius floor.
+  const auto reach_tips = [&](const QuadricOptions& options, MedialMesh& mesh) {
+    if (m.tip_end_tube)
+      detail::reach_unreached_tips(mesh, options.reach_points, m.tip_end_reach * diagonal / m.sample_divisions,
+                                   m.tip_end_thinness, m.min_radius_facets * diagonal / o.measure_divisions,
+                                   quadric.depth);
+  };
   // The simplified medial mesh of `g`, its tube ends extended, at most
   // `budget` primitives; `inside_samples` as QuadricOptions's.
   const auto simplified = [&](const MedialGraph& g, std::size_t budget, int inside_samples, QuadricReport& q,
@@ -183,12 +192,14 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     }
     MedialMesh mesh = quadric_medial_mesh(g, options, &q);
     spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach, quadric.depth);
+    reach_tips(options, mesh);
     // Each tube end got one more edge: simplified further where that
     // overruns the budget.
     while (primitives(mesh) > budget && options.budget > 1) {
       options.budget -= std::min(options.budget - 1, primitives(mesh) - budget);
       mesh = quadric_medial_mesh(g, options, &q);
       spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach, quadric.depth);
+      reach_tips(options, mesh);
     }
     return mesh;
   };

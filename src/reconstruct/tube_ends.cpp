@@ -2,6 +2,8 @@
 #include "tube_ends.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -115,6 +117,41 @@ std::size_t extend_tube_ends(reconstruct::MedialMesh& mesh, double factor, doubl
     }
   }
   return shortened;
+}
+
+std::size_t reach_unreached_tips(reconstruct::MedialMesh& mesh, const std::vector<reconstruct::ReachPoint>& tips,
+                                 double reach, double thinness, double radius,
+                                 const std::function<double(const Vec3&)>& depth) {
+  if (!(radius > 0.0)) return 0;
+  const std::size_t spheres = mesh.spheres.size();
+  std::size_t added = 0;
+  for (const reconstruct::ReachPoint& tip : tips) {
+    std::size_t nearest = spheres;
+    double gap = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < spheres; ++i)
+      if (const double g = (tip.point - mesh.spheres[i].head<3>()).norm() - mesh.spheres[i].w(); g < gap)
+        gap = g, nearest = i;
+    if (nearest == spheres || gap < reach || gap < thinness * mesh.spheres[nearest].w()) continue;
+    // One radius short of the tip: a segment's surface reaches on past its
+    // end (on CGAL's drop, ending at the tip itself left its worst point
+    // there, 1.29% of the diagonal, one radius short 0.77%).
+    const Vec3 c = mesh.spheres[nearest].head<3>();
+    const double length = (tip.point - c).norm();
+    const Vec3 u = (tip.point - c) / length;
+    const Vec3 end = tip.point - std::min(radius, 0.5 * length) * u;
+    // A sharp tip: one radius short of it the input is less than half a
+    // radius deep (a cone under 30° half-angle); a round end of any width
+    // is about a radius deep there, and the surface of the sphere nearest
+    // it rounds it as it is.
+    if (!(depth(end) < 0.5 * radius)) continue;
+    bool inside = true;
+    for (int k = 0; k <= 16 && inside; ++k) inside = depth(c + (k / 16.0) * (end - c)) >= 0.0;
+    if (!inside) continue;
+    mesh.spheres.push_back(reconstruct::Vec4(end.x(), end.y(), end.z(), radius));
+    mesh.edges.push_back({std::int32_t(nearest), std::int32_t(mesh.spheres.size() - 1)});
+    ++added;
+  }
+  return added;
 }
 
 }  // namespace skelconv::detail

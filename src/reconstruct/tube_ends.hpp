@@ -6,7 +6,10 @@
 #include <cstddef>
 #include <functional>
 
+#include <vector>
+
 #include "skelconv/reconstruct/medial_mesh.hpp"
+#include "skelconv/reconstruct/medial_quadric.hpp"
 
 namespace skelconv::detail {
 
@@ -40,5 +43,24 @@ namespace skelconv::detail {
 /// 0 turns it off.
 std::size_t extend_tube_ends(reconstruct::MedialMesh& mesh, double factor, double spike_depth, double taper_reach,
                              const std::function<double(const Vec3&)>& depth);
+
+/// A sharp tip the simplified mesh still falls short of: for each point q
+/// of `tips` (unreached_tips.hpp) whose nearest sphere (c, r) (the least
+/// |q − c| − r) still falls short of it by at least `reach` and `thinness`
+/// × r, a tube edge from that sphere towards q, ending `radius` short of q
+/// (at most halfway) with a sphere of that radius. A cone's medial axis
+/// runs on to its apex, its radius falling to 0; the samples' spacing
+/// stops the medial graph about a spacing short of it (on a tip thinner
+/// than the spacing, at balls barely inside the input), at a sheet's
+/// corner or a tube end whose surface is round and about as wide as its
+/// ball, and no fit brings a sharp tip out of that. Only a sharp tip: at
+/// the new sphere's centre the input (`depth`, its signed distance) must be
+/// less than half `radius` deep (a cone under 30° half-angle; a round end
+/// is about `radius` deep there). The segment must run inside the input
+/// (at 17 points). Elsewhere nothing is added. Returns how many edges were added (each
+/// with one new sphere).
+std::size_t reach_unreached_tips(reconstruct::MedialMesh& mesh, const std::vector<reconstruct::ReachPoint>& tips,
+                                 double reach, double thinness, double radius,
+                                 const std::function<double(const Vec3&)>& depth);
 
 }  // namespace skelconv::detail
