@@ -131,20 +131,26 @@ std::function<double(const Vec3&)> plate_depth(double t, bool tunnel, double a, 
   };
 }
 
+/// The sheet of a thin wall (balls of radius 0.02 round a 0.3 × 0.3 hole)
+/// simplified to `budget` against the depth of a plate 0.04 thick, solid
+/// across the hole or with a tunnel through it, 4 inside samples per test.
+MedialMesh thin_plate_sheet(std::size_t budget, bool tunnel, QuadricReport& report) {
+  QuadricOptions o;
+  o.budget = budget;
+  o.depth = plate_depth(0.02, tunnel, 0.36, 0.64);
+  o.inside_samples = 4;
+  return quadric_medial_mesh(quadric_sheet(21, 0.05, 0.02, 7, 13), o, &report);
+}
+
 TEST(QuadricMedialMesh, HoleWiderThanTheBallsIsClosedWhereTheInputHoldsIt) {
   // The annulus of HoleWiderThanTheBallsIsNeverClosed, of a thin wall (balls
   // of radius 0.02 round a 0.3 × 0.3 hole): a sheet whose Voronoi faces
   // were dropped there. With the input's depth and inside_samples, the
   // loops the hole shrinks to are closed where the plate is solid, never
   // where it has a tunnel.
-  const MedialGraph g = quadric_sheet(21, 0.05, 0.02, 7, 13);
   for (const bool tunnel : {false, true}) {
-    QuadricOptions o;
-    o.budget = 1;
-    o.depth = plate_depth(0.02, tunnel, 0.36, 0.64);
-    o.inside_samples = 4;
     QuadricReport report;
-    const MedialMesh m = quadric_medial_mesh(g, o, &report);
+    const MedialMesh m = thin_plate_sheet(1, tunnel, report);
     EXPECT_EQ(euler_characteristic(m), tunnel ? 0 : 1) << (tunnel ? "the tunnel stays" : "a solid plate is a disc");
     if (!tunnel) EXPECT_GT(report.loops_closed_inside, 0u);
   }
@@ -158,14 +164,9 @@ TEST(QuadricMedialMesh, HoleTheCollapsesLeftIsClosedWhereTheInputHoldsIt) {
   // input holds the disc across it when the plate is solid (closed: the
   // sheet a disc, χ 1), not when the hole is a tunnel of the plate (χ 0);
   // the sheet's outer rim is never closed over the sheet (χ 2).
-  const MedialGraph g = quadric_sheet(21, 0.05, 0.02, 7, 13);
   for (const bool tunnel : {false, true}) {
-    QuadricOptions o;
-    o.budget = 100000;
-    o.depth = plate_depth(0.02, tunnel, 0.36, 0.64);
-    o.inside_samples = 4;
     QuadricReport report;
-    const MedialMesh m = quadric_medial_mesh(g, o, &report);
+    const MedialMesh m = thin_plate_sheet(100000, tunnel, report);
     EXPECT_EQ(report.collapses, 0u);
     EXPECT_EQ(report.holes_closed, tunnel ? 0u : 1u);
     EXPECT_EQ(euler_characteristic(m), tunnel ? 0 : 1) << m.triangles.size() << " triangles";
