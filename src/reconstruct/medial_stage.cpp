@@ -168,11 +168,12 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     shares = part_budgets(areas, m.budget, m.part_minimum_budget);
   }
   // With MedialOptions::tip_end_tube, the sharp tips the simplified mesh
-  // still falls short of get a tube out to them (tube_ends.hpp,
-  // reach_unreached_tips), its end at the fit's radius floor.
+  // still falls short of by `tip_tube_reach` spacings get a tube out to
+  // them (tube_ends.hpp, reach_unreached_tips), its end at the fit's
+  // radius floor.
   const auto reach_tips = [&](const QuadricOptions& options, MedialMesh& mesh) {
     if (m.tip_end_tube)
-      detail::reach_unreached_tips(mesh, options.reach_points, m.tip_end_reach * diagonal / m.sample_divisions,
+      detail::reach_unreached_tips(mesh, options.reach_points, m.tip_tube_reach * diagonal / m.sample_divisions,
                                    m.tip_end_thinness, m.min_radius_facets * diagonal / o.measure_divisions,
                                    quadric.depth);
   };
