@@ -441,6 +441,43 @@ TEST(TubeEnds, ASharpTipTheMeshFallsShortOfGetsATubeOutToIt) {
   EXPECT_TRUE(gap.edges.empty());
 }
 
+// The tube is on by default, but only for a tip the mesh falls short of by
+// half a sample spacing or more: a tip within that is within the goal as
+// it is (half a spacing is 1.25% of the diagonal at 40 divisions). The
+// same cone (apex (1, 0, 0), half-angle asin 0.17), a spacing of 0.2: the
+// stage's reach is `tip_tube_reach` spacings. A ball inscribed on the axis
+// 0.0723 from the apex (radius 0.0723 × 0.17 ≈ 0.0123) falls 0.06 short
+// of it: 0.3 spacings (the cow's horn was 0.29), more than its radius and
+// than the quarter spacing that holds it through the collapses, and the
+// tip is sharp (0.0034 deep one floor radius short of the apex): no tube.
+// The sheet's corner of the test above, 1.2 spacings short, gets one.
+TEST(TubeEnds, ASharpTipShortByLessThanHalfASpacingGetsNoTube) {
+  const MedialOptions defaults;
+  EXPECT_TRUE(defaults.tip_end_tube);
+  const double sin_a = 0.17, cos_a = std::sqrt(1 - sin_a * sin_a), spacing = 0.2;
+  const double reach = defaults.tip_tube_reach * spacing, floor_radius = 0.02;
+  const auto cone = [&](const Vec3& p) {
+    return std::min((1.0 - p.x()) * sin_a - std::hypot(p.y(), p.z()) * cos_a, p.x() + 1.0);
+  };
+  const std::vector<ReachPoint> tips{{0, Vec3(1, 0, 0)}};
+  const double near_length = 0.06 / (1.0 - sin_a);
+  MedialMesh near;
+  near.spheres = {Vec4(1.0 - near_length, 0, 0, near_length * sin_a), Vec4(0.3, 0, 0, 0.1)};
+  near.edges = {{0, 1}};
+  ASSERT_NEAR(1.0 - (near.spheres[0].x() + near.spheres[0].w()), 0.3 * spacing, 1e-12);
+  ASSERT_GT(0.3 * spacing, defaults.tip_end_reach * spacing) << "held through the collapses: a tip pruning left short";
+  ASSERT_GT(0.3 * spacing, defaults.tip_end_thinness * near.spheres[0].w());
+  ASSERT_LT(cone(Vec3(1.0 - floor_radius, 0, 0)), 0.5 * floor_radius) << "a sharp tip";
+  EXPECT_EQ(detail::reach_unreached_tips(near, tips, reach, defaults.tip_end_thinness, floor_radius, cone), 0u);
+  EXPECT_EQ(near.spheres.size(), 2u);
+  EXPECT_EQ(near.edges.size(), 1u);
+  MedialMesh far;
+  far.spheres = {Vec4(0.7, 0.03, 0, 0.06), Vec4(0.3, 0.05, 0, 0.1), Vec4(0.3, -0.05, 0, 0.1)};
+  far.triangles = {{0, 1, 2}};
+  EXPECT_EQ(detail::reach_unreached_tips(far, tips, reach, defaults.tip_end_thinness, floor_radius, cone), 1u);
+  EXPECT_EQ(far.spheres.size(), 4u);
+}
+
 /// A ring of n balls of radius rho around the z axis at distance R: the
 /// medial axis of a torus (a wall around a bore, cut across), each ball
 /// touching the torus on its outer and inner side and above and below.

@@ -223,10 +223,11 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                     "Where the medial fit's radius bound finds a ball inside its neighbour's, it first grows the "
                     "smaller up to its centre's distance to the input, then shrinks the larger (better on some "
                     "shapes, worse on others: docs/reconstruction_medial.md, \"What limits it\")");
-  command->add_flag("--medial-tip-tubes", options.medial.tip_end_tube,
+  command->add_flag("--medial-tip-tubes,!--no-medial-tip-tubes", options.medial.tip_end_tube,
                     "Where the simplified medial mesh still falls short of a sharp tip (a cone under 30 degrees "
-                    "half-angle), a tube edge is added out towards it (better on a drop's sharp tip, worse on the cow: "
-                    "docs/reconstruction_medial.md, \"Sharp tips the mesh still falls short of\")");
+                    "half-angle) by half a sample spacing or more, a tube edge is added out towards it; on by "
+                    "default, --no-medial-tip-tubes adds none (docs/reconstruction_medial.md, \"Sharp tips the mesh "
+                    "still falls short of\")");
   CLI::Option* geometric_radius = command->add_flag_callback(
       "--medial-geometric-triangle-radius",
       [&options] { options.medial.triangle_radius = reconstruct::TriangleRadiusRule::geometric(); },

@@ -168,18 +168,25 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     shares = part_budgets(areas, m.budget, m.part_minimum_budget);
   }
   // With MedialOptions::tip_end_tube, the sharp tips the simplified mesh
-  // still falls short of get a tube out to them (tube_ends.hpp,
-  // reach_unreached_tips), its end at the fit's radius floor.
-  const auto reach_tips = [&](const QuadricOptions& options, MedialMesh& mesh) {
-    if (m.tip_end_tube)
-      detail::reach_unreached_tips(mesh, options.reach_points, m.tip_end_reach * diagonal / m.sample_divisions,
-                                   m.tip_end_thinness, m.min_radius_facets * diagonal / o.measure_divisions,
-                                   quadric.depth);
+  // still falls short of by `tip_tube_reach` spacings get a tube out to
+  // them (tube_ends.hpp, reach_unreached_tips), its end at the fit's
+  // radius floor.
+  const auto reach_tips = [&](const QuadricOptions& options, MedialMesh& mesh) -> std::size_t {
+    if (!m.tip_end_tube) return 0;
+    return detail::reach_unreached_tips(
+        mesh, options.reach_points, m.tip_tube_reach * diagonal / m.sample_divisions, m.tip_end_thinness,
+        m.min_radius_facets * diagonal / o.measure_divisions, quadric.depth);
+  };
+  // What the tube ends' steps did to a simplified mesh: spikes' spheres
+  // beyond moved back (extend_tube_ends), tubes added out to sharp tips
+  // (reach_unreached_tips).
+  struct EndCounts {
+    std::size_t spikes = 0, tip_tubes = 0;
   };
   // The simplified medial mesh of `g`, its tube ends extended, at most
   // `budget` primitives; `inside_samples` as QuadricOptions's.
   const auto simplified = [&](const MedialGraph& g, std::size_t budget, int inside_samples, QuadricReport& q,
-                              std::size_t& spikes) {
+                              EndCounts& ends) {
     QuadricOptions options = quadric;
     options.budget = budget;
     options.inside_samples = inside_samples;
@@ -191,28 +198,29 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
       options.reach_weight = m.tip_end_weight;
     }
     MedialMesh mesh = quadric_medial_mesh(g, options, &q);
-    spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach, quadric.depth);
-    reach_tips(options, mesh);
+    ends.spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach, quadric.depth);
+    ends.tip_tubes = reach_tips(options, mesh);
     // Each tube end got one more edge: simplified further where that
     // overruns the budget.
     while (primitives(mesh) > budget && options.budget > 1) {
       options.budget -= std::min(options.budget - 1, primitives(mesh) - budget);
       mesh = quadric_medial_mesh(g, options, &q);
-      spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach, quadric.depth);
-      reach_tips(options, mesh);
+      ends.spikes =
+          detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach, quadric.depth);
+      ends.tip_tubes = reach_tips(options, mesh);
     }
     return mesh;
   };
   const auto medial_mesh = [&](int inside_samples) {
     std::vector<std::size_t> budgets = shares;
     QuadricReport q;
-    std::size_t spikes = 0;
+    EndCounts ends;
     // The single simplification first; with several parts, each sphere
     // given the part its centre is deepest in. Where it leaves every part
     // at least its minimum it is kept (the shares would only reorder the
     // same spheres: the fit, which sums the primitives in the file's
     // order, may then end elsewhere: the close balls fused once so).
-    MedialMesh mesh = simplified(graph, m.budget, inside_samples, q, spikes);
+    MedialMesh mesh = simplified(graph, m.budget, inside_samples, q, ends);
     bool starved = false;
     std::size_t mixed = 0;
     if (part_total > 1) {
@@ -227,13 +235,14 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     }
     if (starved) {
       q = QuadricReport{};
-      spikes = 0;
+      ends = EndCounts{};
       const std::vector<std::int32_t> graph_parts = vertex_parts(graph);
       std::vector<MedialGraph> graphs;
       for (std::size_t p = 0; p < part_total; ++p) graphs.push_back(medial_graph_part(graph, graph_parts, std::int32_t(p)));
       std::vector<MedialMesh> meshes(part_total);
       std::vector<QuadricReport> reports(part_total);
-      std::vector<std::size_t> part_spikes(part_total, 0), done_at(part_total, 0);
+      std::vector<EndCounts> part_ends(part_total);
+      std::vector<std::size_t> done_at(part_total, 0);
       std::vector<bool> settled(part_total, false);
       // The link condition may hold a part above its share (a sheet's
       // loops): it keeps what it holds, and the parts not yet over theirs
@@ -241,7 +250,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
       for (std::size_t pass = 0; pass < part_total; ++pass) {
         for (std::size_t p = 0; p < part_total; ++p)
           if (!settled[p] && (pass == 0 || done_at[p] != budgets[p])) {
-            meshes[p] = simplified(graphs[p], budgets[p], inside_samples, reports[p], part_spikes[p]);
+            meshes[p] = simplified(graphs[p], budgets[p], inside_samples, reports[p], part_ends[p]);
             done_at[p] = budgets[p];
           }
         std::size_t held = 0;
@@ -263,7 +272,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
       }
       for (std::size_t p = 0; p < part_total; ++p) {
         const QuadricReport& pr = reports[p];
-        spikes += part_spikes[p];
+        ends.spikes += part_ends[p].spikes, ends.tip_tubes += part_ends[p].tip_tubes;
         q.collapses += pr.collapses, q.refused_by_link += pr.refused_by_link;
         q.loops_closed += pr.loops_closed, q.loops_closed_inside += pr.loops_closed_inside;
         q.bridges_closed += pr.bridges_closed, q.holes_closed += pr.holes_closed, q.tips_held += pr.tips_held;
@@ -286,9 +295,13 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
       o.progress(fmt::format("medial mesh: {} balls held in place through the collapses, each the nearest to a sample "
                              "at a protrusion's end that the pruned balls fall short of",
                              q.tips_held));
-    if (o.progress && spikes > 0)
+    if (o.progress && ends.spikes > 0)
       o.progress(fmt::format("medial mesh: {} spikes' spheres beyond their ends moved back to the input's surface",
-                             spikes));
+                             ends.spikes));
+    if (o.progress && ends.tip_tubes > 0)
+      o.progress(fmt::format("medial mesh: {} tubes added out to sharp tips the mesh falls short of by half a sample "
+                             "spacing or more",
+                             ends.tip_tubes));
     if (part_total > 1 && o.progress) {
       std::vector<std::size_t> held(part_total, 0);
       for (std::size_t p = 0; p < part_total; ++p) held[p] = primitives(medial_mesh_part(mesh, std::int32_t(p)));

@@ -103,17 +103,23 @@ struct MedialOptions {
   double tip_end_thinness = 1.0;
   double tip_end_weight = 1.0;
   /// Where, after the collapses, the nearest sphere of such a sample still
-  /// falls short of it by `tip_end_reach` spacings and `tip_end_thinness`
+  /// falls short of it by `tip_tube_reach` spacings and `tip_end_thinness`
   /// radii (a sharp tip: a cone's medial axis runs to its apex, its radius
   /// falling to 0, but the samples' spacing stops the medial graph about a
   /// spacing short of it), that sphere gets a tube edge towards the sample,
   /// ending one radius short of it with a sphere at the fit's radius floor
   /// (`min_radius_facets`), where the way is inside the input
-  /// (src/reconstruct/tube_ends.hpp, reach_unreached_tips). Off by
-  /// default: it takes CGAL's drop (blob-closed.off, whose tip comes back
-  /// as a knob 2.1% of the diagonal short) from 2.14% to 0.77%, but the
-  /// cow (`--repair`, two tubes added) from 1.67 / 0.163 to 1.78 / 0.166.
-  bool tip_end_tube = false;
+  /// (src/reconstruct/tube_ends.hpp, reach_unreached_tips). It takes CGAL's
+  /// drop (blob-closed.off, whose tip came back as a knob 2.1% of the
+  /// diagonal short; its ball 0.72 spacings short) from 2.14% to 0.77%.
+  bool tip_end_tube = true;
+  /// Half a spacing (1.25% of the diagonal at 40 divisions): a tip the
+  /// mesh falls shorter of than that is within the goal as it is, and a
+  /// tube there changes the fit's path over the whole shape for little
+  /// (the cow's horn, 0.29 spacings short: 0.68% there without a tube,
+  /// 0.24% with one, but the fit stopped its first-order rounds one round
+  /// later and ended 1.67% → 1.78% in the crease between tail and rump).
+  double tip_tube_reach = 0.5;
   /// A tube's free end is extended by one sphere this many radii beyond it
   /// (the medial axis stops short of a cap); 0 = none.
   double end_extension = 1.0;
