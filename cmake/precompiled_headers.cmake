@@ -48,7 +48,7 @@ foreach(target IN ITEMS
     skelconv_scalis_scalar_types_test skelconv_canal_tests skelconv_reconstruct_tests
     skelconv_reconstruct_table_tests
     verify_reference_selfcheck verify_properties verify_base_cases verify_verdict verify_report_tools
-    verify_scalis_properties verify_polygon_reference verify_polygon_properties)
+    verify_far_field_series verify_scalis_properties verify_polygon_reference verify_polygon_properties)
   if(TARGET ${target})
     target_compile_options(${target} PRIVATE ${SKELCONV_TEST_OPTIMIZATION})  # (tests/ has it already)
     target_precompile_headers(${target} REUSE_FROM skelconv_pch_donor)
