@@ -255,18 +255,19 @@ TEST(Pruning, ThinProtrusionsAreJoinedToTheBodyAlongTheirPrunedPath) {
   EXPECT_EQ(graph_pieces(graph), 2u);
 }
 
-/// A medial vertex at `centre` of `radius` inside a tube along `axis` (x, y
-/// or z): its four contact samples on the tube's wall, across two diameters
-/// perpendicular to the axis (θ = π).
-void add_tube_ball(MedialGraph& graph, const Vec3& centre, double radius, int axis) {
+/// A medial vertex at `centre` of `radius` inside a tube along `axis` (in
+/// the xy plane): its four contact samples on the tube's wall, across two
+/// diameters perpendicular to the axis (θ = π).
+void add_tube_ball(MedialGraph& graph, const Vec3& centre, double radius, const Vec3& axis) {
   const auto first = std::int32_t(graph.samples.size());
-  const Vec3 u = Vec3::Unit((axis + 1) % 3), w = Vec3::Unit((axis + 2) % 3);
+  const Vec3 u = axis.cross(Vec3::UnitZ()).normalized(), w = Vec3::UnitZ();
   for (const Vec3& d : {u, Vec3(-u), w, Vec3(-w)}) graph.samples.push_back(centre + radius * d);
   graph.vertices.push_back({centre, radius, {first, first + 1, first + 2, first + 3}});
 }
 
 // A bent horn whose two tip pieces neither meet the body in the graph nor
-// overlap its balls. The body: 60 balls of radius 1 along x, 2 apart
+// overlap its balls, each ball's samples on the horn's wall across its way
+// (A's along y, B's along the way from A). The body: 60 balls of radius 1 along x, 2 apart
 // (vertex 10 at (20, 0, 0)). The horn leaves it along −y: A, radius 0.2 at
 // (20, −1.5, 0) (gap 1.5 − 1.2 = 0.3 to vertex 10, its nearest), then bends
 // to its end B, radius 0.1 at (20.8, −3, 0). B's nearest body ball is
@@ -283,8 +284,8 @@ void add_tube_ball(MedialGraph& graph, const Vec3& centre, double radius, int ax
 TEST(Pruning, ABentHornsPiecesAreBridgedInAChainFromTheBody) {
   MedialGraph graph;
   add_chain(graph, 60, 2.0);
-  add_tube_ball(graph, Vec3(20, -1.5, 0), 0.2, 1);  // 60, A
-  add_tube_ball(graph, Vec3(20.8, -3, 0), 0.1, 0);  // 61, B
+  add_tube_ball(graph, Vec3(20, -1.5, 0), 0.2, Vec3(0, 1, 0));     // 60, A
+  add_tube_ball(graph, Vec3(20.8, -3, 0), 0.1, Vec3(0.8, -1.5, 0));  // 61, B, its wall across the way from A
   graph.samples.push_back(Vec3(20.4, -1.5, 0));     // the bend's wall
   MedialGraph apart = graph;
   const PruningReport kept_apart =

@@ -178,6 +178,10 @@ void connect_tips(MedialGraph& graph, const std::vector<std::int32_t>& root, con
       }
     }
   }
+  for (const auto& [r, pair] : bridge) {
+    ++report.tips_bridged;
+    graph.edges.push_back({pair.first, pair.second, {-1, -1, -1}});
+  }
   // The pieces apart still (a sharp horn whose tip pieces and the body's
   // balls neither meet in the graph nor overlap: the horn narrows between
   // them below the samples' spacing): for each, the pair of balls with the
