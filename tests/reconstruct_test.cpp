@@ -279,8 +279,9 @@ void add_tube_ball(MedialGraph& graph, const Vec3& centre, double radius, const 
 // 0.17); then B's nearest held ball is A (gap √(0.8² + 1.5²) − 0.3 = 1.4),
 // the tube between them clear (the bend's sample 0.35 from its axis, half
 // radii under 0.1): bridged. Both tips joined: one piece, edges 10 – 60 and
-// 60 – 61. With B's tube to the body clear and A's bridge not anchoring
-// it, B would join the body straight across the bend.
+// 60 – 61. Were bridged pieces not to anchor the next round, B would stay
+// apart; were the tube not tested, B would join the body straight across
+// the bend.
 TEST(Pruning, ABentHornsPiecesAreBridgedInAChainFromTheBody) {
   MedialGraph graph;
   add_chain(graph, 60, 2.0);
