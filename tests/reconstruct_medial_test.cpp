@@ -1684,6 +1684,48 @@ TEST(PlugTunnels, APipeOfAirTheInputDoesNotHaveIsPlugged) {
   EXPECT_TRUE(skelconv::detail::air_tunnel_plugs(ring, ring, 2.5 * h).empty());
 }
 
+// The smallest ball holding a set of points, against balls known from
+// their definition: a far point and a cluster inside the diametral ball of
+// it and the cluster's centre (the ball is that diametral ball, centre
+// (0.5, 0, 0), radius 0.5; a ball about the points' mean out to the
+// farthest is twice as large); a regular tetrahedron's corners with its
+// edges' midpoints (its circumsphere, centre 0, radius √3); an obtuse
+// triangle's corners (the diametral ball of its longest side); an
+// equilateral triangle's corners after points inside it (its circumcircle,
+// radius 1).
+TEST(PlugTunnels, TheSmallestBallHoldingPoints) {
+  using skelconv::detail::smallest_ball;
+  const auto expect_ball = [](const Vec4& got, const Vec3& centre, double radius) {
+    EXPECT_NEAR((got.head<3>() - centre).norm(), 0.0, 1e-12 * (1.0 + radius));
+    EXPECT_NEAR(got.w(), radius, 1e-12 * (1.0 + radius));
+  };
+  std::vector<Vec3> lopsided;
+  for (int i = 0; i < 50; ++i) {
+    const double t = 2.0 * std::numbers::pi * i / 50;
+    lopsided.push_back(Vec3(0.01, 0.01 * std::cos(t), 0.01 * std::sin(t)));
+  }
+  lopsided.push_back(Vec3(0.0, 0.0, 0.0));
+  lopsided.push_back(Vec3(1.0, 0.0, 0.0));
+  expect_ball(smallest_ball(lopsided), Vec3(0.5, 0.0, 0.0), 0.5);
+
+  const std::vector<Vec3> corners{Vec3(1, 1, 1), Vec3(1, -1, -1), Vec3(-1, 1, -1), Vec3(-1, -1, 1)};
+  std::vector<Vec3> tetrahedron;
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    for (std::size_t j = i + 1; j < corners.size(); ++j) tetrahedron.push_back((corners[i] + corners[j]) / 2.0);
+  tetrahedron.insert(tetrahedron.end(), corners.begin(), corners.end());
+  expect_ball(smallest_ball(tetrahedron), Vec3::Zero(), std::sqrt(3.0));
+
+  expect_ball(smallest_ball({Vec3(0, 0, 0), Vec3(1, 0.2, 0), Vec3(2, 0, 0)}), Vec3(1, 0, 0), 1.0);
+
+  std::vector<Vec3> triangle{Vec3(0.1, 0.1, 0.0), Vec3(-0.2, 0.0, 0.0), Vec3(0.0, -0.3, 0.0)};
+  for (int i = 0; i < 3; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / 3 + 0.3;
+    triangle.push_back(Vec3(std::cos(a), std::sin(a), 0.0));
+  }
+  expect_ball(smallest_ball(triangle), Vec3::Zero(), 1.0);
+  EXPECT_EQ(smallest_ball({}), Vec4::Zero());
+}
+
 // Room within the budget for a cavity's sphere: a chain A–B–C–D–E along x
 // (A 0, B 1, C 1.05, D 2, E 2.01, radii 0.1). D–E is the shortest edge but
 // E is on no other, and A–B would leave A on none. B–C (0.05 long) and

@@ -213,7 +213,8 @@ std::size_t graph_pieces(const MedialGraph& graph) {
 //   other (the chain's next centres are √(0.4² + 1.05²) ≈ 1.124 away):
 //   bridged by the edge 25 – 106;
 // - a teat at (30, 1.3 / 1.5 / 1.7, 0): its nearest chain ball, at (30, 0,
-//   0), is 1.3 > 1 + 0.1 away: no overlap, it stays apart.
+//   0), is 1.3 > 1 + 0.1 away: no overlap; the tube between them passes
+//   that ball's sample at (30, 1, 0), the body's surface: it stays apart.
 // Without `connect`: 100 + 3 + 3 + 3 vertices in four pieces. With it: the
 // two cut vertices come back (not the detour's), 111 vertices, the two
 // tails one piece with the body: two pieces, 99 + 5 + (1 + 2) + 2 edges.
@@ -252,6 +253,58 @@ TEST(Pruning, ThinProtrusionsAreJoinedToTheBodyAlongTheirPrunedPath) {
   EXPECT_EQ(graph.edges.back().a, 25);
   EXPECT_EQ(graph.edges.back().b, 105);
   EXPECT_EQ(graph_pieces(graph), 2u);
+}
+
+/// A medial vertex at `centre` of `radius` inside a tube along `axis` (in
+/// the xy plane): its four contact samples on the tube's wall, across two
+/// diameters perpendicular to the axis (θ = π).
+void add_tube_ball(MedialGraph& graph, const Vec3& centre, double radius, const Vec3& axis) {
+  const auto first = std::int32_t(graph.samples.size());
+  const Vec3 u = axis.cross(Vec3::UnitZ()).normalized(), w = Vec3::UnitZ();
+  for (const Vec3& d : {u, Vec3(-u), w, Vec3(-w)}) graph.samples.push_back(centre + radius * d);
+  graph.vertices.push_back({centre, radius, {first, first + 1, first + 2, first + 3}});
+}
+
+// A bent horn whose two tip pieces neither meet the body in the graph nor
+// overlap its balls, each ball's samples on the horn's wall across its way
+// (A's along y, B's along the way from A). The body: 60 balls of radius 1 along x, 2 apart
+// (vertex 10 at (20, 0, 0)). The horn leaves it along −y: A, radius 0.2 at
+// (20, −1.5, 0) (gap 1.5 − 1.2 = 0.3 to vertex 10, its nearest), then bends
+// to its end B, radius 0.1 at (20.8, −3, 0). B's nearest body ball is
+// vertex 10 (gap √(0.8² + 3²) − 1.1 ≈ 2.005; vertex 11 at (22, 0, 0): 2.13),
+// but the straight tube to it passes a sample of the horn's bend at (20.4,
+// −1.5, 0), its midpoint, where the tube's radius is 0.55: across air. A
+// is bridged to vertex 10 (the tube clear: that sample 0.4 from A's
+// centre, at least 0.47 from the tube's axis where its half radius is under
+// 0.17); then B's nearest held ball is A (gap √(0.8² + 1.5²) − 0.3 = 1.4),
+// the tube between them clear (the bend's sample 0.35 from its axis, half
+// radii under 0.1): bridged. Both tips joined: one piece, edges 10 – 60 and
+// 60 – 61. Were bridged pieces not to anchor the next round, B would stay
+// apart; were the tube not tested, B would join the body straight across
+// the bend.
+TEST(Pruning, ABentHornsPiecesAreBridgedInAChainFromTheBody) {
+  MedialGraph graph;
+  add_chain(graph, 60, 2.0);
+  add_tube_ball(graph, Vec3(20, -1.5, 0), 0.2, Vec3(0, 1, 0));     // 60, A
+  add_tube_ball(graph, Vec3(20.8, -3, 0), 0.1, Vec3(0.8, -1.5, 0));  // 61, B, its wall across the way from A
+  graph.samples.push_back(Vec3(20.4, -1.5, 0));     // the bend's wall
+  MedialGraph apart = graph;
+  const PruningReport kept_apart =
+      prune_medial_graph(apart, std::numbers::pi / 4, 0.05, 0.0, LobeOptions{}, TipOptions{0.5, 2.0, false});
+  EXPECT_EQ(kept_apart.tips_kept, 2u);
+  EXPECT_EQ(graph_pieces(apart), 3u);
+  const PruningReport report =
+      prune_medial_graph(graph, std::numbers::pi / 4, 0.05, 0.0, LobeOptions{}, TipOptions{0.5, 2.0, true});
+  EXPECT_EQ(report.tips_kept, 2u);
+  EXPECT_EQ(report.tips_connected, 0u);
+  EXPECT_EQ(report.tips_bridged, 2u);
+  ASSERT_EQ(graph.vertices.size(), 62u);
+  ASSERT_EQ(graph.edges.size(), 61u);
+  EXPECT_EQ(graph.edges[59].a, 10);
+  EXPECT_EQ(graph.edges[59].b, 60);
+  EXPECT_EQ(graph.edges[60].a, 60);
+  EXPECT_EQ(graph.edges[60].b, 61);
+  EXPECT_EQ(graph_pieces(graph), 1u);
 }
 
 // The islands rule measures a piece against the largest piece of its own

@@ -86,7 +86,8 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
                              pruned.tips_kept, m.tip_reach, m.tip_thinness));
     if (o.progress && pruned.tips_connected + pruned.tips_bridged > 0)
       o.progress(fmt::format("medial path: thin protrusions joined to the body again: {} along their medial path ({} "
-                             "pruned vertices kept), {} by an edge between overlapping balls",
+                             "pruned vertices kept), {} by an edge between balls (overlapping, or the tube between them clear of "
+                             "the samples)",
                              pruned.tips_connected, pruned.connecting_vertices, pruned.tips_bridged));
   };
   prune(graph);

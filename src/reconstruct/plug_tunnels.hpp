@@ -33,12 +33,19 @@ namespace skelconv::detail {
 /// a cut of the input too (a bore narrower than the box).
 ///
 /// Returns, per cut, the ball of an isolated sphere (a compact point, f =
-/// iso at its radius ρ) about the centre of the cut's vertices, ρ the
-/// farthest of them: the sphere fills the pipe's cross-section there and so
-/// cuts the pipe into two creases, each open at one end. Sorted by ρ, the
+/// iso at its radius ρ), the smallest ball that holds the cut's vertices:
+/// holding a loop round the pipe, it fills the pipe's cross-section there
+/// and so cuts the pipe into two creases, each open at one end; the
+/// smallest such ball buries the least of a slit the pipe runs along (a
+/// ball about the vertices' mean, out to the farthest, is up to twice as
+/// large where the band is lopsided, as a V-shaped slit's is). Sorted by ρ, the
 /// smallest first (the least material added; ties by position). The caller
 /// meshes again to see that the genus dropped.
 std::vector<reconstruct::Vec4> air_tunnel_plugs(const TriangleMesh& meshed, const TriangleMesh& input, double cell);
+
+/// The smallest ball (centre, radius) that holds every point of `points`
+/// (Welzl's algorithm, in the points' order; a zero ball where empty).
+reconstruct::Vec4 smallest_ball(const std::vector<Vec3>& points);
 
 /// How much taking the triangles `removed` (indices into `mesh.triangles`,
 /// distinct) out of the closed surface `mesh` lowers its genus, doubled

@@ -4,10 +4,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <queue>
+#include <set>
 #include <utility>
 
 #include "union_find.hpp"
@@ -110,7 +111,10 @@ bool reaches_beyond(const MedialGraph& graph, const std::vector<std::size_t>& la
 /// segment between their centres, so the edge stays inside the shape; both
 /// balls in the same closed part of the surface (a Voronoi ball may reach a
 /// little past a curved surface, into a close part beside it). A piece
-/// whose balls overlap none of the anchored ones stays apart.
+/// whose balls overlap none of the anchored ones is bridged by the pair
+/// with the smallest gap where the tube between them is clear of the
+/// samples (no sample within half the radius of a ball along it), and
+/// otherwise stays apart.
 void connect_tips(MedialGraph& graph, const std::vector<std::int32_t>& root, const std::vector<bool>& anchored,
                   const std::vector<bool>& tipped, std::vector<bool>& keep, PruningReport& report) {
   const std::size_t n = graph.vertices.size();
@@ -177,6 +181,62 @@ void connect_tips(MedialGraph& graph, const std::vector<std::int32_t>& root, con
   for (const auto& [r, pair] : bridge) {
     ++report.tips_bridged;
     graph.edges.push_back({pair.first, pair.second, {-1, -1, -1}});
+  }
+  // The pieces apart still (a sharp horn whose tip pieces and the body's
+  // balls neither meet in the graph nor overlap: the horn narrows between
+  // them below the samples' spacing): for each, the pair of balls with the
+  // smallest gap between their spheres (the first in vertex order on a
+  // tie), bridged where the tube between them stays clear of the samples,
+  // each ball along it (centre and radius linear between the pair's)
+  // holding no sample within half its radius: a bridge across air crosses
+  // the surface, whose samples lie on the segment there. A piece bridged
+  // anchors the next round, so a horn's pieces join in a chain from its
+  // base (a straight bridge from the body to a curved horn's end leaves the
+  // horn).
+  std::vector<bool> held = anchored;
+  std::set<std::int32_t> joined;
+  for (const auto& [r, end] : nearest) joined.insert(r);
+  for (const auto& [r, pair] : bridge) joined.insert(r);
+  for (std::size_t v = 0; v < n; ++v)
+    if (tipped[v] && joined.count(root[v]) > 0) held[v] = true;
+  constexpr int steps = 16;
+  const auto clear_between = [&graph](const MedialVertex& a, const MedialVertex& b) {
+    for (int k = 0; k <= steps; ++k) {
+      const double t = double(k) / steps;
+      const Vec3 centre = (1.0 - t) * a.centre + t * b.centre;
+      const double within = 0.5 * ((1.0 - t) * a.radius + t * b.radius);
+      for (const Vec3& sample : graph.samples)
+        if ((sample - centre).squaredNorm() < within * within) return false;
+    }
+    return true;
+  };
+  for (bool more = true; more;) {
+    more = false;
+    std::map<std::int32_t, std::pair<std::int32_t, std::int32_t>> gap_pair;
+    std::map<std::int32_t, double> smallest_gap;
+    for (std::size_t v = 0; v < n; ++v) {
+      if (!tipped[v] || joined.count(root[v]) > 0) continue;
+      const MedialVertex& ball = graph.vertices[v];
+      const std::int32_t part = vertex_part(graph, v);
+      for (std::size_t u = 0; u < n; ++u) {
+        if (!held[u] || root[u] == root[v] || vertex_part(graph, u) != part) continue;
+        const MedialVertex& other = graph.vertices[u];
+        const double gap = (other.centre - ball.centre).norm() - ball.radius - other.radius;
+        if (const auto at = smallest_gap.find(root[v]); at == smallest_gap.end() || gap < at->second) {
+          smallest_gap[root[v]] = gap;
+          gap_pair[root[v]] = {std::int32_t(u), std::int32_t(v)};
+        }
+      }
+    }
+    for (const auto& [r, pair] : gap_pair) {
+      if (!clear_between(graph.vertices[std::size_t(pair.first)], graph.vertices[std::size_t(pair.second)])) continue;
+      ++report.tips_bridged;
+      graph.edges.push_back({pair.first, pair.second, {-1, -1, -1}});
+      joined.insert(r);
+      for (std::size_t v = 0; v < n; ++v)
+        if (root[v] == r) held[v] = true;
+      more = true;
+    }
   }
 }
 

@@ -15,7 +15,14 @@ bounding box (hence the diagonal every length is relative to), so its
 result may move; a renumbering changes no coordinate, so a reconstruction
 that does not depend on the file's order gives the same bytes.
 
-    copies_spread.py SKELCONV WORKDIR [--rotations N] [--renumberings N] SHAPE[:ROT[:REN]]...
+Scaled copies (--scale FACTOR, repeatable) multiply every coordinate by
+FACTOR and move the shape far from the origin, by a fixed-seed direction
+times 100 scaled diagonals: every length the reconstruction uses is
+relative to the diagonal, so its relative numbers (H, RMS, χ, components,
+primitives) should be the original's up to the roundings of the scaling
+and of the coordinates' larger exponent.
+
+    copies_spread.py SKELCONV WORKDIR [--rotations N] [--renumberings N] [--scale F]... SHAPE[:ROT[:REN]]...
 
 A SHAPE is a path, or a name under $CGAL_MESHES (default data/meshes: CGAL's
 sample meshes, from /usr/share/doc/libcgal-dev/data.tar.gz of libcgal-demo); ROT and REN override the counts for that shape.
@@ -75,6 +82,15 @@ def rotation(seed, axis=None, angle=None):
     return np.eye(3) + np.sin(angle) * k + (1 - np.cos(angle)) * k @ k, axis, angle
 
 
+def scaled(v, factor, seed):
+    """v times factor, moved by 100 scaled diagonals in a fixed-seed direction."""
+    rng = np.random.default_rng(2000 + seed)
+    direction = rng.normal(size=3)
+    direction /= np.linalg.norm(direction)
+    diagonal = np.linalg.norm(v.max(axis=0) - v.min(axis=0))
+    return v * factor + direction * (100 * factor * diagonal)
+
+
 def renumbered(v, faces, seed):
     rng = np.random.default_rng(1000 + seed)
     perm = rng.permutation(len(v))  # new index of old vertex i: perm[i]
@@ -118,6 +134,8 @@ def main():
     ap.add_argument("--renumberings", type=int, default=1)
     ap.add_argument("--axis-angle", action="append", default=[], metavar="X,Y,Z,RADIANS",
                     help="one more rotated copy of every shape, about this axis by this angle")
+    ap.add_argument("--scale", action="append", type=float, default=[], metavar="FACTOR",
+                    help="one more copy of every shape, scaled by FACTOR and moved 100 scaled diagonals away")
     ap.add_argument("--extra", default="", help="more options for skeletonize, one string")
     a = ap.parse_args()
     extra = a.extra.split()
@@ -154,6 +172,11 @@ def main():
             m.parent.mkdir(parents=True, exist_ok=True)
             write_off(m, v @ r.T, faces)
             copies.append((f"rotated given{k} ({angle:.2f} rad about {np.round(axis, 2).tolist()})", m))
+        for k, factor in enumerate(a.scale):
+            m = a.workdir / stem / f"scaled{k}.off"
+            m.parent.mkdir(parents=True, exist_ok=True)
+            write_off(m, scaled(v, factor, k), faces)
+            copies.append((f"scaled {k} (×{factor:g}, moved 100 diagonals)", m))
         first = None
         for label, m in copies:
             res = run(a.skelconv, m, a.workdir / stem / label.split(" (")[0].replace(" ", ""), extra)
