@@ -984,6 +984,22 @@ TEST(MedialFit, HoldsTheSpheresAboutAHoleAndTakesTheRestOfTheStep) {
   EXPECT_GT(far_end(refused), 0.45) << "the case must be one that refusing whole steps gets wrong";
 }
 
+/// Two unit balls A and B 10 apart, each with four surface points at
+/// distance 1.3 from its centre: the fit left alone grows both to about 1.3.
+struct TwoBalls {
+  MedialMesh balls;
+  std::vector<WeightedPoint> points;
+};
+TwoBalls two_balls_with_points_at_1_3() {
+  TwoBalls t;
+  t.balls.spheres = {Vec4(0.0, 0.0, 0.0, 1.0), Vec4(10.0, 0.0, 0.0, 1.0)};
+  t.balls.isolated = {0, 1};
+  for (const Vec3& centre : {Vec3(0, 0, 0), Vec3(10, 0, 0)})
+    for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, -1, 0), Vec3(0, 0.6, 0.8), Vec3(-0.8, 0, 0.6)})
+      t.points.push_back({centre + 1.3 * d, 1.0});
+  return t;
+}
+
 // Two balls 10 apart (their supports, 1.5 r, never meet), each with the
 // points 1.3 from its centre that pull its radius from 1 towards 1.3:
 // the rounds on first-order distances take it to 1.3296 (printed), then
@@ -1000,13 +1016,7 @@ TEST(MedialFit, HoldsTheSpheresAboutAHoleAndTakesTheRestOfTheStep) {
 // spends, where running its rounds to the end meshed the end and bisected
 // its rounds again (at least two).
 TEST(MedialFit, ARepairWhoseDefectOpensAgainStopsAtItsFirstRound) {
-  MedialMesh balls;
-  balls.spheres = {Vec4(0.0, 0.0, 0.0, 1.0), Vec4(10.0, 0.0, 0.0, 1.0)};
-  balls.isolated = {0, 1};
-  std::vector<WeightedPoint> points;
-  for (const Vec3& centre : {Vec3(0, 0, 0), Vec3(10, 0, 0)})
-    for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, -1, 0), Vec3(0, 0.6, 0.8), Vec3(-0.8, 0, 0.6)})
-      points.push_back({centre + 1.3 * d, 1.0});
+  const auto [balls, points] = two_balls_with_points_at_1_3();
   const ReconstructOptions o;
   const MedialField field_of = written_field(o);
   MedialFitOptions fit;
@@ -1053,13 +1063,7 @@ TEST(MedialFit, ARepairWhoseDefectOpensAgainStopsAtItsFirstRound) {
 // not the start (both at 1), which threw away every round the repair
 // fitted. Neither is farther from the input's topology than the start.
 TEST(MedialFit, AFailedRepairGoesBackToItsLastRoundThatKeepsTheTopologyNotToTheStart) {
-  MedialMesh balls;
-  balls.spheres = {Vec4(0.0, 0.0, 0.0, 1.0), Vec4(10.0, 0.0, 0.0, 1.0)};
-  balls.isolated = {0, 1};
-  std::vector<WeightedPoint> points;
-  for (const Vec3& centre : {Vec3(0, 0, 0), Vec3(10, 0, 0)})
-    for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, -1, 0), Vec3(0, 0.6, 0.8), Vec3(-0.8, 0, 0.6)})
-      points.push_back({centre + 1.3 * d, 1.0});
+  const auto [balls, points] = two_balls_with_points_at_1_3();
   const ReconstructOptions o;
   const MedialField field_of = written_field(o);
   MedialFitOptions fit;
