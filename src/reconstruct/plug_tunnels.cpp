@@ -6,8 +6,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <initializer_list>
-#include <limits>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -15,6 +13,9 @@
 #include <utility>
 #include <vector>
 
+#include <CGAL/Min_sphere_of_points_d_traits_3.h>
+#include <CGAL/Min_sphere_of_spheres_d.h>
+#include <CGAL/Simple_cartesian.h>
 #include <Eigen/Dense>
 
 #include "union_find.hpp"
@@ -117,75 +118,23 @@ class Indexed {
 
 using Cell = std::array<std::int64_t, 3>;
 
-/// Whether `p` lies in `ball` (centre, radius), up to a rounding of its size.
-bool holds(const reconstruct::Vec4& ball, const Vec3& p) {
-  return (p - ball.head<3>()).norm() <= ball.w() * (1.0 + 1e-12) + 1e-300;
-}
-
-/// The smallest ball with `a` and `b` on its sphere.
-reconstruct::Vec4 ball_on(const Vec3& a, const Vec3& b) {
-  const Vec3 c = (a + b) / 2.0;
-  return {c.x(), c.y(), c.z(), (a - c).norm()};
-}
-
-/// The smallest ball with `a`, `b` and `c` on its sphere: their
-/// circumcircle's, or the diametral ball of the farthest two where they are
-/// in a line.
-reconstruct::Vec4 ball_on(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 u = b - a, v = c - a, w = u.cross(v);
-  const double w2 = w.squaredNorm();
-  if (!(w2 > 1e-24 * u.squaredNorm() * v.squaredNorm())) {
-    const reconstruct::Vec4 ab = ball_on(a, b), ac = ball_on(a, c), bc = ball_on(b, c);
-    return ab.w() >= ac.w() && ab.w() >= bc.w() ? ab : (ac.w() >= bc.w() ? ac : bc);
-  }
-  const Vec3 centre = a + (u.squaredNorm() * v - v.squaredNorm() * u).cross(w) / (2.0 * w2);
-  return {centre.x(), centre.y(), centre.z(), (a - centre).norm()};
-}
-
-/// The ball with `a`, `b`, `c` and `d` on its sphere; where they lie in a
-/// plane, the smallest of the balls on three of them that holds the fourth.
-reconstruct::Vec4 ball_on(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  Eigen::Matrix3d m;
-  m.row(0) = 2.0 * (b - a);
-  m.row(1) = 2.0 * (c - a);
-  m.row(2) = 2.0 * (d - a);
-  const Vec3 rhs((b - a).squaredNorm(), (c - a).squaredNorm(), (d - a).squaredNorm());
-  const double scale = std::max({(b - a).norm(), (c - a).norm(), (d - a).norm()});
-  if (!(std::abs(m.determinant()) > 1e-12 * 8.0 * scale * scale * scale)) {
-    std::optional<reconstruct::Vec4> best;
-    for (const auto& [ball, other] : {std::pair{ball_on(a, b, c), d}, std::pair{ball_on(a, b, d), c},
-                                      std::pair{ball_on(a, c, d), b}, std::pair{ball_on(b, c, d), a}})
-      if (holds(ball, other) && (!best || ball.w() < best->w())) best = ball;
-    return best ? *best : ball_on(a, b, c);
-  }
-  const Vec3 centre = a + m.fullPivLu().solve(rhs);
-  return {centre.x(), centre.y(), centre.z(), (a - centre).norm()};
-}
-
 }  // namespace
 
 reconstruct::Vec4 smallest_ball(const std::vector<Vec3>& points) {
-  // Welzl's incremental algorithm in the points' order (no shuffle: the
-  // same input gives the same ball): a point outside the ball of those
-  // before it lies on the sphere of theirs with it, and so on down to four
-  // points on the sphere.
   if (points.empty()) return reconstruct::Vec4::Zero();
-  reconstruct::Vec4 ball(points[0].x(), points[0].y(), points[0].z(), 0.0);
-  for (std::size_t i = 1; i < points.size(); ++i) {
-    if (holds(ball, points[i])) continue;
-    ball = reconstruct::Vec4(points[i].x(), points[i].y(), points[i].z(), 0.0);
-    for (std::size_t j = 0; j < i; ++j) {
-      if (holds(ball, points[j])) continue;
-      ball = ball_on(points[i], points[j]);
-      for (std::size_t k = 0; k < j; ++k) {
-        if (holds(ball, points[k])) continue;
-        ball = ball_on(points[i], points[j], points[k]);
-        for (std::size_t l = 0; l < k; ++l)
-          if (!holds(ball, points[l])) ball = ball_on(points[i], points[j], points[k], points[l]);
-      }
-    }
-  }
-  return ball;
+  // CGAL's solver in double precision with square roots: the ball is a
+  // plug's size and place, not a predicate, so rounding is harmless. Its
+  // random pivoting starts from a fixed seed, so the same points give the
+  // same ball.
+  using Kernel = CGAL::Simple_cartesian<double>;
+  using Traits = CGAL::Min_sphere_of_points_d_traits_3<Kernel, double, CGAL::Tag_true>;
+  std::vector<Kernel::Point_3> at;
+  at.reserve(points.size());
+  for (const Vec3& p : points) at.emplace_back(p.x(), p.y(), p.z());
+  CGAL::Min_sphere_of_spheres_d<Traits> ball(at.begin(), at.end());  // its accessors are not const
+  auto centre = ball.center_cartesian_begin();
+  const double x = *centre++, y = *centre++, z = *centre;
+  return {x, y, z, ball.radius()};
 }
 
 long long genus_drop_doubled(const TriangleMesh& mesh, const std::vector<std::int32_t>& removed) {

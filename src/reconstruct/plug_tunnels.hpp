@@ -44,7 +44,7 @@ namespace skelconv::detail {
 std::vector<reconstruct::Vec4> air_tunnel_plugs(const TriangleMesh& meshed, const TriangleMesh& input, double cell);
 
 /// The smallest ball (centre, radius) that holds every point of `points`
-/// (Welzl's algorithm, in the points' order; a zero ball where empty).
+/// (CGAL's `Min_sphere_of_spheres_d`; a zero ball where empty).
 reconstruct::Vec4 smallest_ball(const std::vector<Vec3>& points);
 
 /// How much taking the triangles `removed` (indices into `mesh.triangles`,
