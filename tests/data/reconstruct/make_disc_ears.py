@@ -60,6 +60,12 @@ def main(path):
     fine = axis(-0.03, 0.03, 0.006)
     ys = np.concatenate([axis(-0.39, -0.05, STEP), axis(-0.05, -0.03, 0.01)[1:-1], fine,
                          axis(0.03, 0.05, 0.01)[1:-1], axis(0.05, 0.39, STEP)])
+    polygonise(field, xs, ys, zs, path)
+
+
+def polygonise(field, xs, ys, zs, path):
+    """Writes the closed surface field = 0 on the rectilinear grid xs × ys × zs
+    (the field negative inside, positive on the grid's boundary) to `path` as OFF."""
     X, Y, Z = np.meshgrid(xs, ys, zs, indexing="ij")
     P = np.stack([X, Y, Z], axis=-1)
     F = field(P)
