@@ -1688,6 +1688,47 @@ TEST(PlugTunnels, APipeOfAirTheInputDoesNotHaveIsPlugged) {
   EXPECT_TRUE(skelconv::detail::air_tunnel_plugs(ring, ring, 2.5 * h).empty());
 }
 
+// A piece apart (the dino rotated: a toe's tip whose neck the fit thinned
+// below the facet): a stick from x = −0.5 to 0.5 of radius 0.2 and an
+// isolated sphere of radius 0.1 at x = 1 (its surface from 0.9), whose
+// supports (σ = 1.5: out to 0.8 and from 0.85) do not meet. The gap runs
+// along the x axis from the stick's cap (its farthest x, read off the
+// meshed surface) to the sphere's nearest x; the bridge is the smallest
+// ball holding the gap's two nearest vertices: the gap's midpoint and half
+// its length, each within the facets' roundings. With it the surface is
+// one sphere's topology. The stick's surface alone, and the shell round a
+// hollow (a cavity, no piece), are bridged nowhere; with two components
+// counted for the input, the two are left apart.
+TEST(BridgePieces, APieceApartIsBridgedToTheNearestShell) {
+  const double h = 0.04;
+  MedialMesh stick;
+  stick.spheres = {Vec4(-0.5, 0.0, 0.0, 0.2), Vec4(0.5, 0.0, 0.0, 0.2)};
+  stick.edges = {{0, 1}};
+  const MedialMesh apart = with_sphere(stick, Vec4(1.0, 0.0, 0.0, 0.1));
+  const TriangleMesh two = meshed_in_box(apart, h);
+  ASSERT_EQ(mesh_topology(two).components, 2u);
+  ASSERT_EQ(mesh_topology(two).euler_characteristic, 4);
+
+  double cap = -1.0, near = 2.0;
+  for (const Vec3& v : two.vertices) (v.x() < 0.85 ? cap : near) = v.x() < 0.85 ? std::max(cap, v.x()) : std::min(near, v.x());
+  ASSERT_GT(cap, 0.5);
+  ASSERT_NEAR(near, 0.9, h);
+  const std::vector<Vec4> bridges = skelconv::detail::piece_bridges(two, 1);
+  ASSERT_EQ(bridges.size(), 1u);
+  EXPECT_NEAR(bridges[0].x(), 0.5 * (cap + near), h);
+  EXPECT_LT(bridges[0].head<3>().tail<2>().norm(), h);
+  EXPECT_NEAR(bridges[0].w(), 0.5 * (near - cap), h);
+  const MeshTopology joined = mesh_topology(meshed_in_box(with_sphere(apart, bridges[0]), h));
+  EXPECT_EQ(joined.components, 1u);
+  EXPECT_EQ(joined.euler_characteristic, 2);
+
+  EXPECT_TRUE(skelconv::detail::piece_bridges(two, 2).empty());
+  EXPECT_TRUE(skelconv::detail::piece_bridges(meshed_in_box(stick, h), 1).empty());
+  const TriangleMesh hollow = meshed_in_box(octahedron_shell(), h);
+  ASSERT_EQ(mesh_topology(hollow).components, 2u);
+  EXPECT_TRUE(skelconv::detail::piece_bridges(hollow, 1).empty());
+}
+
 // The smallest ball holding a set of points, against balls known from
 // their definition: a far point and a cluster inside the diametral ball of
 // it and the cluster's centre (the ball is that diametral ball, centre

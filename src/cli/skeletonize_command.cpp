@@ -262,6 +262,10 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
       "--no-medial-plug-air-tunnels", [&options] { options.medial.plug_air_tunnels = false; },
       "Where the medial result has more tunnels than the input, leave a tunnel through a pipe of air unplugged "
       "(by default an isolated sphere plugs it: docs/reconstruction_medial.md, \"Tunnels through air\")");
+  command->add_flag_callback(
+      "--no-medial-bridge-pieces", [&options] { options.medial.bridge_pieces = false; },
+      "Where the medial result has more components than the input, leave a piece apart as it is (by default an "
+      "isolated sphere bridges it to the nearest other: docs/reconstruction_medial.md, \"Pieces apart\")");
   command->add_option("--prune-angle", options.prune_angle, "Pruning threshold θ in degrees of the curve path (default 90)");
   command->add_option("--prune-span", options.prune_span,
                       "Also prune Voronoi vertices whose contact samples span less than this × the diagonal "

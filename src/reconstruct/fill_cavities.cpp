@@ -136,6 +136,34 @@ std::vector<Cavity> spurious_cavities(const TriangleMesh& meshed, const std::fun
   return cavities;
 }
 
+std::vector<reconstruct::Vec4> piece_bridges(const TriangleMesh& meshed, std::size_t components) {
+  std::vector<Component> all = components_of(meshed);
+  std::vector<std::size_t> outer;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (all[i].volume > 0.0) outer.push_back(i);
+  std::vector<reconstruct::Vec4> bridges;
+  if (outer.size() <= components) return bridges;
+  // The smallest volume first; the largest, the body, is bridged to.
+  std::stable_sort(outer.begin(), outer.end(),
+                   [&all](std::size_t a, std::size_t b) { return all[a].volume < all[b].volume; });
+  for (std::size_t k = 0; k + 1 < outer.size(); ++k) {
+    const Component& piece = all[outer[k]];
+    double nearest = std::numeric_limits<double>::infinity();
+    Vec3 from = Vec3::Zero(), to = Vec3::Zero();
+    for (std::size_t j = 0; j < outer.size(); ++j) {
+      if (j == k) continue;
+      for (const std::int32_t u : piece.vertices)
+        for (const std::int32_t v : all[outer[j]].vertices) {
+          const double d = (meshed.vertices[std::size_t(u)] - meshed.vertices[std::size_t(v)]).norm();
+          if (d < nearest) nearest = d, from = meshed.vertices[std::size_t(u)], to = meshed.vertices[std::size_t(v)];
+        }
+    }
+    const Vec3 centre = 0.5 * (from + to);
+    bridges.emplace_back(centre.x(), centre.y(), centre.z(), 0.5 * nearest);
+  }
+  return bridges;
+}
+
 std::size_t drop_smallest_primitives(reconstruct::MedialMesh& mesh, std::size_t count, double sigma) {
   std::size_t dropped = 0;
   for (; dropped < count; ++dropped) {

@@ -69,6 +69,21 @@ MeshTopology topology_after_fill(const TriangleMesh& meshed, const std::vector<C
 /// wall does.
 bool encloses_empty_space(const TriangleMesh& surface);
 
+/// Where `meshed` (a closed surface f = iso, as the grid mesher writes it)
+/// has more outer shells (components bounding a positive volume) than
+/// `components`, the input's count: a piece of the reconstruction apart
+/// from the rest (a toe's tip whose neck the fit thinned below the measure's
+/// facet). Returns, per outer shell but the one of the largest volume, the
+/// smallest volume first (ties in the components' order), a ball for an
+/// isolated sphere (a compact point, f = iso at its radius ρ) across the
+/// gap between the shell and the nearest other outer shell: the smallest
+/// ball holding the two nearest vertices, one on each. Compact kernels are
+/// non-negative, so the sum of fields is ≥ iso wherever one of them is:
+/// the solid then holds the ball, which touches both shells, and the two
+/// are one where the mesher resolves the joint; the caller meshes again to
+/// see. Empty where the outer shells are no more than `components`.
+std::vector<reconstruct::Vec4> piece_bridges(const TriangleMesh& meshed, std::size_t components);
+
 /// Room for `count` more primitives within the budget: drops the `count`
 /// tube edges or triangles of `mesh` with the smallest supports (the
 /// Minkowski sum of the primitive and a ball of σ × its mean radius, σ =

@@ -638,28 +638,69 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // slit's bottom 2.6% of the diagonal inside). Two places are tried per
   // box size, each a meshing; only where the result has more tunnels than
   // the input, so elsewhere the skeleton is the same bytes.
+  const auto excess = [&](const TriangleMesh& s) {
+    return handles_doubled(mesh_topology(s)) - handles_doubled(input_topology) - (long long)input_topology.pinches;
+  };
+  // The two-sided farthest distance, as far as it is cheap to see: the
+  // surface's vertices to the input, and the fit's points on the input
+  // to the surface (a plug that buries a deep slit moves the input's
+  // points in it away from the surface; the smallest primitive dropped
+  // for room may uncover a part of the input).
+  const auto farthest = [&](const TriangleMesh& s) {
+    double far = 0.0;
+    for (const Vec3& v : s.vertices) far = std::max(far, shape.distance(v));
+    const SurfaceQuery result(s);
+    for (const WeightedPoint& p : points) far = std::max(far, result.distance(p.point));
+    return far;
+  };
+  // An isolated sphere `ball` added to the result (the smallest primitive
+  // dropped first where the budget has no room, nothing where even that
+  // leaves none), meshed again, any cavity it closes off filled as the fill
+  // fills one; its topology defects against `before`, and where they drop,
+  // its farthest distance to the input.
+  struct Trial {
+    Stage stage;
+    std::size_t dropped = 0, filled = 0;
+    long long after = 0;
+    double far = 0.0;
+  };
+  const auto with_sphere = [&](const Vec4& ball, long long before) -> std::optional<Trial> {
+    Trial t;
+    t.stage.medial = stage.medial;
+    t.dropped = primitives(t.stage.medial) + 1 > m.budget
+                    ? detail::drop_smallest_primitives(t.stage.medial, 1, m.kernel_sigma)
+                    : 0;
+    if (primitives(t.stage.medial) + 1 > m.budget) return std::nullopt;
+    t.stage.medial.isolated.push_back(std::int32_t(t.stage.medial.spheres.size()));
+    t.stage.medial.spheres.push_back(ball);
+    if (part_total > 1) t.stage.medial.parts.push_back(part_of(ball.head<3>()));
+    topology_error(t.stage.medial);
+    t.stage.meshed = std::move(meshed.back().second);
+    meshed.clear();
+    t.filled = fill(t.stage, m.budget - std::min(m.budget, primitives(t.stage.medial)));
+    t.after = topology_defects(input_topology, mesh_topology(*t.stage.meshed));
+    if (t.after < before) t.far = farthest(*t.stage.meshed);
+    return t;
+  };
+  const auto trial_line = [](const Vec4& ball, const char* where, const Trial& t, long long before,
+                             std::optional<double> bound) {
+    return fmt::format(
+        "medial path: an isolated sphere of radius {:.4g} at ({:.4g}, {:.4g}, {:.4g}) {}{}{}: topology defects {} -> "
+        "{}{}",
+        ball.w(), ball.x(), ball.y(), ball.z(), where,
+        t.dropped > 0 ? ", the smallest primitive dropped to make room within the budget" : "",
+        t.filled > 0 ? fmt::format(", {} cavities it closed filled", t.filled) : std::string(), before, t.after,
+        t.after < before && bound
+            ? fmt::format(", farthest distance to the input {:.4g} against at most {:.4g}", t.far, *bound)
+            : std::string());
+  };
+  constexpr double bound_facets = 2.0;
   if (too_much.empty() && m.plug_air_tunnels && stage.meshed) {
-    const auto excess = [&](const TriangleMesh& s) {
-      return handles_doubled(mesh_topology(s)) - handles_doubled(input_topology) - (long long)input_topology.pinches;
-    };
-    // The two-sided farthest distance, as far as it is cheap to see: the
-    // surface's vertices to the input, and the fit's points on the input
-    // to the surface (a plug that buries a deep slit moves the input's
-    // points in it away from the surface; the smallest primitive dropped
-    // for room may uncover a part of the input).
-    const auto farthest = [&](const TriangleMesh& s) {
-      double far = 0.0;
-      for (const Vec3& v : s.vertices) far = std::max(far, shape.distance(v));
-      const SurfaceQuery result(s);
-      for (const WeightedPoint& p : points) far = std::max(far, result.distance(p.point));
-      return far;
-    };
     // Cut boxes of 2, 3 and 4 facets a side: a pipe's wall narrower than
     // a facet fits in the first where it runs along the grid, the others
     // hold it where it runs across (homer rotated: 1.5 facets).
     constexpr std::array<double, 3> cells{1.0, 1.5, 2.0};
     constexpr std::size_t tries = 2;
-    constexpr double bound_facets = 2.0;
     std::optional<double> bound;
     while (excess(*stage.meshed) > 0) {
       const long long before = topology_defects(input_topology, mesh_topology(*stage.meshed));
@@ -675,37 +716,12 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
                                  input_topology.euler_characteristic, plugs.size(), 2.0 * cell));
         if (!plugs.empty() && !bound) bound = std::max(farthest(*stage.meshed), bound_facets * facet);
         for (std::size_t i = 0; i < std::min(tries, plugs.size()); ++i) {
-          Stage plugged;
-          plugged.medial = stage.medial;
-          const std::size_t dropped = primitives(plugged.medial) + 1 > m.budget
-                                          ? detail::drop_smallest_primitives(plugged.medial, 1, m.kernel_sigma)
-                                          : 0;
-          if (primitives(plugged.medial) + 1 > m.budget) break;
-          plugged.medial.isolated.push_back(std::int32_t(plugged.medial.spheres.size()));
-          plugged.medial.spheres.push_back(plugs[i]);
-          if (part_total > 1) plugged.medial.parts.push_back(part_of(plugs[i].head<3>()));
-          topology_error(plugged.medial);
-          plugged.meshed = std::move(meshed.back().second);
-          meshed.clear();
-          // A plug across a pipe that branches may close a stretch of it
-          // at both ends: a bubble, filled as the fill fills one.
-          const std::size_t filled = fill(plugged, m.budget - std::min(m.budget, primitives(plugged.medial)));
-          const long long after = topology_defects(input_topology, mesh_topology(*plugged.meshed));
-          const double far = after < before ? farthest(*plugged.meshed) : 0.0;
-          const bool within = after < before && far <= *bound;
-          if (o.progress)
-            o.progress(fmt::format(
-                "medial path: an isolated sphere of radius {:.4g} at ({:.4g}, {:.4g}, {:.4g}) across the tunnel{}{}: "
-                "topology defects {} -> {}{}",
-                plugs[i].w(), plugs[i].x(), plugs[i].y(), plugs[i].z(),
-                dropped > 0 ? ", the smallest primitive dropped to make room within the budget" : "",
-                filled > 0 ? fmt::format(", {} cavities it closed filled", filled) : std::string(), before, after,
-                after < before ? fmt::format(", farthest distance to the input {:.4g} against at most {:.4g}", far,
-                                             *bound)
-                               : std::string()));
-          if (within && (!best || far < best_far)) {
-            best = std::move(plugged);
-            best_far = far;
+          std::optional<Trial> t = with_sphere(plugs[i], before);
+          if (!t) break;
+          if (o.progress) o.progress(trial_line(plugs[i], "across the tunnel", *t, before, bound));
+          if (t->after < before && t->far <= *bound && (!best || t->far < best_far)) {
+            best = std::move(t->stage);
+            best_far = t->far;
           }
         }
       }
@@ -765,6 +781,45 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
         if (report != nullptr) *report = again_report;
         return again;
       }
+    }
+  }
+  // A piece apart: an outer shell of the result too many (the dino
+  // rotated: a toe's tip beyond a neck the fit thinned below the measure's
+  // facet, 12 triangles 0.07 from the foot). It comes after the fit, so the
+  // guard, bounded by the unfitted spheres' defects, may keep it, and after
+  // the thin protrusions' passes, which join a piece the pruning cut off.
+  // Bridged by an isolated sphere across the gap to the nearest other
+  // shell (piece_bridges), the smallest piece first, meshed again and kept
+  // as a plug is: where the topology defects drop and the farthest distance
+  // between the surface and the input stays within the larger of what it
+  // was and two facets of the measure. Where the sphere that only touches
+  // both shells leaves the joint below the facet, one a facet larger.
+  if (too_much.empty() && m.bridge_pieces && stage.meshed) {
+    std::optional<double> bound;
+    for (;;) {
+      const std::vector<Vec4> bridges = detail::piece_bridges(*stage.meshed, input_topology.components);
+      if (bridges.empty()) break;
+      if (o.progress)
+        o.progress(fmt::format("medial path: the result has {} components, {} in the input: {} pieces apart, "
+                               "each bridged to the nearest other",
+                               mesh_topology(*stage.meshed).components, input_topology.components, bridges.size()));
+      if (!bound) bound = std::max(farthest(*stage.meshed), bound_facets * facet);
+      const long long before = topology_defects(input_topology, mesh_topology(*stage.meshed));
+      std::optional<Stage> kept;
+      for (const double grown : {0.0, facet}) {
+        const Vec4 ball(bridges.front().x(), bridges.front().y(), bridges.front().z(), bridges.front().w() + grown);
+        std::optional<Trial> t = with_sphere(ball, before);
+        if (!t) break;
+        if (o.progress) o.progress(trial_line(ball, "across the gap", *t, before, bound));
+        if (t->after < before && t->far <= *bound) {
+          kept = std::move(t->stage);
+          break;
+        }
+      }
+      if (o.progress) o.progress(kept ? "medial path: the bridge kept" : "medial path: no bridge kept");
+      if (!kept) break;
+      stage.medial = std::move(kept->medial);
+      stage.meshed = std::move(kept->meshed);
     }
   }
   if (stage.meshed) {

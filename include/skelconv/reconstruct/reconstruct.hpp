@@ -262,6 +262,15 @@ struct MedialOptions {
   /// docs/reconstruction_medial.md, "Tunnels through air"). False turns it
   /// off.
   bool plug_air_tunnels = true;
+  /// Where the result has more outer shells than the input has
+  /// components, a piece apart (a tip beyond a neck the fit thinned below
+  /// the measure's facet) is bridged to the nearest other shell by an
+  /// isolated sphere across the gap, the smallest piece first, kept where
+  /// the topology defects drop and the farthest distance between the
+  /// surface and the input stays within the larger of what it was and two
+  /// facets of the measure (fill_cavities.hpp, piece_bridges;
+  /// docs/reconstruction_medial.md, "Pieces apart"). False turns it off.
+  bool bridge_pieces = true;
   MedialFitOptions fit;
 };
 
