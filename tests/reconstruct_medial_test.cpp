@@ -519,6 +519,63 @@ TEST(QuadricMedialMesh, MergedBallsStayInsideTheShapeWhenItsDepthIsKnown) {
   }
 }
 
+/// The sheet of quadric_sheet (no hole) whose radius grows by `step` from
+/// one column of vertices (one x) to the next, its contact planes z = ±r
+/// of its own column.
+MedialGraph graded_sheet(int n, double h, double r, double step) {
+  MedialGraph g = quadric_sheet(n, h, r);
+  for (MedialVertex& v : g.vertices) {
+    v.radius = r + step * std::round(v.centre.x() / h);
+    g.samples[std::size_t(v.samples[0])].z() = v.radius;
+    g.samples[std::size_t(v.samples[1])].z() = -v.radius;
+  }
+  return g;
+}
+
+TEST(QuadricMedialMesh, WithinTheBudgetCollapsesGoOnWhileWithinTheErrorTarget) {
+  // A sheet of 21 columns whose radius steps by Δ from one column to the
+  // next: a collapse within a column makes a sphere of no error, one that
+  // first joins two columns a sphere whose root mean square distance to
+  // its planes (a planes at one radius, b at the next, each vertex 4) is
+  // Δ √(ab) / (a + b), at least 0.208 Δ for a column's 84 planes against
+  // one vertex's 4. Its 800 triangles are within a budget of 1000.
+  const double step = 0.005;
+  const MedialGraph g = graded_sheet(21, 0.05, 0.2, step);
+  QuadricOptions o;
+  o.budget = 1000;
+  QuadricReport without;
+  const MedialMesh all = quadric_medial_mesh(g, o, &without);
+  EXPECT_EQ(primitives(all), 800u) << "without a target, nothing to collapse within the budget";
+  EXPECT_EQ(without.collapses, 0u);
+  EXPECT_EQ(without.stopped_at_budget, 1u);
+  // Below the error of any first join of two columns: every column
+  // collapses on itself to one sphere of its radius (a disc's collapses
+  // end at a chain, a complex of its topology).
+  o.error_target = 0.2 * step;
+  QuadricReport within;
+  const MedialMesh columns = quadric_medial_mesh(g, o, &within);
+  EXPECT_EQ(within.stopped_at_error, 1u);
+  EXPECT_EQ(within.collapses_under_budget, within.collapses);
+  EXPECT_GT(within.over_error_target, 0u) << "collapses across the columns are left undone";
+  EXPECT_EQ(columns.spheres.size(), 21u) << "each column one sphere";
+  EXPECT_EQ(primitives(columns), 20u) << "a chain of 21 spheres";
+  EXPECT_EQ(euler_characteristic(columns), 1) << "a disc stays a disc";
+  std::set<long> radii;
+  for (const Vec4& s : columns.spheres) {
+    const double column = std::round((s.w() - 0.2) / step);
+    EXPECT_NEAR(s.w(), 0.2 + step * column, 1e-9) << "a sphere of two columns";
+    EXPECT_NEAR(s.x(), 0.05 * column, 1e-9);
+    EXPECT_NEAR(s.z(), 0.0, 1e-9);
+    radii.insert(long(column));
+  }
+  EXPECT_EQ(radii.size(), 21u) << "every column keeps a sphere";
+  // Above the error of joining two whole columns (Δ / 2): columns join,
+  // and fewer primitives are left.
+  o.error_target = 0.6 * step;
+  const MedialMesh joined = quadric_medial_mesh(g, o);
+  EXPECT_LT(primitives(joined), primitives(columns));
+}
+
 TEST(QuadricMedialMesh, SameGraphSameMesh) {
   const MedialGraph g = quadric_sheet(15, 0.05, 0.3, 5, 9);
   QuadricOptions o;

@@ -117,13 +117,13 @@ std::string report_json(const reconstruct::Reconstruction& r, const TriangleMesh
   const MeshTopology input_topology = mesh_topology(input);
   std::string text = fmt::format("{{\"samples\": {}, \"medial_vertices\": {}, \"pruned_vertices\": {}, "
                                  "\"pruned_branches\": {}, \"spurs_removed\": {}, \"tolerance\": {:.17g}, "
-                                 "\"input_repair\": {}, \"budget\": {}, \"curve_over_budget\": {}, "
+                                 "\"input_repair\": {}, \"budget\": {}, \"medial_error\": {:.17g}, \"curve_over_budget\": {}, "
                                  "\"input_euler_characteristic\": {}, \"input_components\": {}, \"input_pinches\": {}, "
                                  "\"medial_seconds\": {:.3g}, "
                                  "\"result\": \"{}\", \"stages\": [",
                                  r.samples, r.medial_vertices, r.pruning.vertices_removed,
                                  r.pruning.branches_removed, r.spurs_removed, r.tolerance, input_repair,
-                                 options.medial.budget,
+                                 options.medial.budget, options.medial.error_target,
                                  r.curve_over_budget > 0 ? std::to_string(r.curve_over_budget) : std::string("null"),
                                  input_topology.euler_characteristic, input_topology.components, input_topology.pinches,
                                  r.medial_seconds, r.stages.back().name);
@@ -179,6 +179,13 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                       "is simplified to it, and auto does not keep a curve skeleton of more (--method curve only "
                       "says so); fewer primitives, larger error")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));
+  command->add_option("--medial-error", options.medial.error_target,
+                      fmt::format("Fewer primitives where they are not needed: once within --budget, the medial mesh is "
+                                  "simplified further while each merged sphere stays within this × the diagonal (root "
+                                  "mean square) of the input's tangent planes at the samples it stands for (default "
+                                  "{}; 0: off, simplified to the budget)",
+                                  options.medial.error_target))
+      ->check(CLI::Range(0.0, 1.0));
   command->add_option("--medial-prune-angle", options.medial.prune_angle_degrees,
                       fmt::format("Pruning threshold θ in degrees of the medial path (default {})",
                                   options.medial.prune_angle_degrees));

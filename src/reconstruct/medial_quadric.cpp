@@ -484,6 +484,7 @@ std::size_t close_sheet_holes(Complex& k, const QuadricOptions& o) {
 
 struct Candidate {
   double cost = 0.0;
+  double mean_error = 0.0;  // the merged sphere's mean squared distance to its planes (QuadricOptions::error_target)
   Index u = 0, v = 0;
   unsigned stamp_u = 0, stamp_v = 0;
   Vec4 merged;
@@ -498,7 +499,9 @@ class Simplifier {
         if (u < v) push(u, v);
   }
 
-  /// Collapses until the primitives fit the budget or no collapse is left.
+  /// Collapses until the primitives fit the budget, then, with an error
+  /// target, while collapses within it are left; or until no collapse is
+  /// left.
   void run(QuadricReport& report) {
     std::size_t live = std::size_t(std::count(k_.alive.begin(), k_.alive.end(), true));
     std::size_t uncounted = 0;  // collapses before the primitives are counted again
@@ -506,22 +509,41 @@ class Simplifier {
     std::size_t inside = 0;
     std::function<bool(const std::array<Index, 3>&)> held;
     if (o_.depth && o_.inside_samples > 0) held = [this](const std::array<Index, 3>& t) { return held_by_input(k_, o_, t); };
+    const bool targeted = o_.error_target > 0.0;
+    const double target = o_.error_target * o_.error_target;
+    bool within_budget = false;
     while (!queue_.empty()) {
       // Counting the primitives is linear in the complex: only near the
       // end, and no more often than needed (a collapse removes at most a
-      // few: the triangles and the edge on it).
-      if (live <= 4 * o_.budget && uncounted == 0) {
-        const std::size_t p = k_.primitives();
-        if (p <= o_.budget) break;
-        uncounted = (p - o_.budget) / 4;
-      } else if (uncounted > 0) {
-        --uncounted;
+      // few: the triangles and the edge on it). A collapse never adds
+      // primitives, so once within the budget they stay within it.
+      if (!within_budget) {
+        if (live <= 4 * o_.budget && uncounted == 0) {
+          const std::size_t p = k_.primitives();
+          if (p <= o_.budget) {
+            if (!targeted) {
+              ++report.stopped_at_budget;
+              return;
+            }
+            within_budget = true;
+          } else {
+            uncounted = (p - o_.budget) / 4;
+          }
+        } else if (uncounted > 0) {
+          --uncounted;
+        }
       }
       const Candidate c = queue_.top();
       queue_.pop();
       if (!k_.alive[std::size_t(c.u)] || !k_.alive[std::size_t(c.v)] || k_.stamp[std::size_t(c.u)] != c.stamp_u ||
           k_.stamp[std::size_t(c.v)] != c.stamp_v || !k_.has_edge(c.u, c.v))
         continue;
+      // Its error changes only when u or v does, and each of their
+      // collapses pushes their edges again.
+      if (within_budget && c.mean_error > target) {
+        ++report.over_error_target;
+        continue;
+      }
       if (!k_.link_condition(c.u, c.v, fill, inside, held)) {
         ++report.refused_by_link;
         blocked_[c.u].push_back(c.v);
@@ -535,8 +557,10 @@ class Simplifier {
       report.loops_closed_inside += inside;
       collapse(c);
       ++report.collapses;
+      report.collapses_under_budget += within_budget;
       --live;
     }
+    ++(within_budget ? report.stopped_at_error : report.stopped_without_collapse);
   }
 
  private:
@@ -572,6 +596,7 @@ class Simplifier {
     Candidate c;
     const double length = o_.length_weight * 0.5 * q.A.trace() * (su.head<3>() - sv.head<3>()).squaredNorm();
     c.cost = (best_error + length) * std::pow(stability_ratio(su, sv), 2);
+    c.mean_error = best_error / std::max(0.5 * q.A.trace(), 1e-300);
     c.u = u, c.v = v;
     c.stamp_u = k_.stamp[std::size_t(u)], c.stamp_v = k_.stamp[std::size_t(v)];
     c.merged = best;

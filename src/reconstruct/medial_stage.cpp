@@ -10,6 +10,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <string>
 #include <unordered_map>
 
 #include <fmt/format.h>
@@ -131,6 +132,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
     return depth_at.emplace(key, shape.signed_distance(c)).first->second;
   };
   quadric.overhang = m.merged_overhang * diagonal;
+  quadric.error_target = m.error_target * diagonal;
   // The closed parts of the input (medial_parts.hpp): with more than one,
   // each sphere and inside point belongs to the part it lies deepest in
   // (largest signed distance; a sphere, where the budget is shared out per
@@ -278,6 +280,9 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
         q.loops_closed += pr.loops_closed, q.loops_closed_inside += pr.loops_closed_inside;
         q.bridges_closed += pr.bridges_closed, q.holes_closed += pr.holes_closed, q.tips_held += pr.tips_held;
         q.euler_before += pr.euler_before, q.euler_after += pr.euler_after;
+        q.stopped_at_budget += pr.stopped_at_budget, q.stopped_at_error += pr.stopped_at_error;
+        q.stopped_without_collapse += pr.stopped_without_collapse;
+        q.collapses_under_budget += pr.collapses_under_budget, q.over_error_target += pr.over_error_target;
       }
       mesh = joined_part_meshes(meshes);
     }
@@ -292,6 +297,25 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
                                                               q.loops_closed_inside, q.bridges_closed, q.holes_closed)
                                                 : std::string(),
                              q.euler_before, q.euler_after));
+    if (o.progress) {
+      // Why the collapses stopped: one reason per simplification (each
+      // part's own where the parts were simplified apart).
+      std::vector<std::string> why;
+      if (q.stopped_at_budget > 0) why.push_back(fmt::format("the budget reached ({})", q.stopped_at_budget));
+      if (q.stopped_at_error > 0)
+        why.push_back(fmt::format("within the budget, every collapse left over the error target of {:.3g}% of the "
+                                  "diagonal or refused by the link condition ({})",
+                                  100 * m.error_target, q.stopped_at_error));
+      if (q.stopped_without_collapse > 0)
+        why.push_back(fmt::format("over the budget, no collapse the link condition allows ({})",
+                                  q.stopped_without_collapse));
+      o.progress(fmt::format("medial mesh: {} primitives, the collapses stopped at: {}{}", primitives(mesh),
+                             fmt::join(why, "; "),
+                             m.error_target > 0.0
+                                 ? fmt::format("; {} collapses within the budget, {} left undone over the target",
+                                               q.collapses_under_budget, q.over_error_target)
+                                 : std::string()));
+    }
     if (o.progress && q.tips_held > 0)
       o.progress(fmt::format("medial mesh: {} balls held in place through the collapses, each the nearest to a sample "
                              "at a protrusion's end that the pruned balls fall short of",

@@ -41,7 +41,11 @@
 // r_v|) / |c_u − c_v| ∈ [0, 1], which is near 0 for a ball inside its
 // neighbour and 1 across a sheet (a small term in the edge's length keeps
 // the spheres evenly spread where the error is zero). The collapses stop when the primitives
-// (triangles, edges in no triangle, spheres in no edge) fit the budget.
+// (triangles, edges in no triangle, spheres in no edge) fit the budget,
+// or, with an error target (QuadricOptions::error_target), once under the
+// budget, when every collapse left would make a sphere farther than the
+// target from the tangent planes it stands for (the budget is a cap, the
+// target a floor on the error worth a primitive).
 //
 // Where asked (QuadricOptions::inside_samples, with the input's depth),
 // a loop the input holds a disc across is no tunnel of the shape and is
@@ -80,6 +84,19 @@ struct ReachPoint {
 struct QuadricOptions {
   /// Collapse until the primitives are at most this many.
   std::size_t budget = 500;
+  /// Once within the budget, go on collapsing, cheapest first, where the
+  /// merged sphere's error stays within this distance (absolute; 0: off,
+  /// stop at the budget). The error is the root mean square, over the
+  /// tangent planes of every sample the sphere stands for (the contact
+  /// samples of every Voronoi ball merged into it, reach points counted
+  /// `reach_weight` times), of the sphere's distance to the plane
+  /// n·(q − c) − r: how far the ball's surface is from the input's along
+  /// its normal at those samples, on average. So after the stop every
+  /// sphere merged under the budget is within the target of its planes in
+  /// that mean (a sphere merged to reach the budget may not be), and the
+  /// collapses that would make one farther are left undone. It bounds the
+  /// balls of the medial mesh, not the surface the fit makes of them.
+  double error_target = 0.0;
   /// The pull toward the edge's midpoint, × the trace of the summed
   /// quadric: small enough not to move a well-determined sphere (a relative
   /// change of about this), large enough to fix a tube's free direction.
@@ -154,6 +171,14 @@ struct QuadricReport {
   std::size_t bridges_closed = 0;       ///< sheets closed across a tube edge after the collapses (inside_samples)
   std::size_t holes_closed = 0;         ///< holes through sheets closed after the collapses (inside_samples)
   std::size_t tips_held = 0;            ///< balls held in place for their reach points (reach_points)
+  /// Why the collapses stopped, one of the three per simplification (the
+  /// counts add up over the parts of a shape simplified apart): the budget
+  /// reached (no error target); within the budget, every collapse left
+  /// over the error target (or refused by the link condition); above the
+  /// budget, no collapse left that the link condition allows.
+  std::size_t stopped_at_budget = 0, stopped_at_error = 0, stopped_without_collapse = 0;
+  std::size_t collapses_under_budget = 0;  ///< collapses made once within the budget (error_target)
+  std::size_t over_error_target = 0;       ///< collapses left undone for their error (error_target)
 };
 
 /// The medial mesh of `graph` (its faces included) simplified as described
