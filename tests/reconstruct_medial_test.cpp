@@ -205,6 +205,70 @@ TEST(QuadricMedialMesh, TubeEdgeAcrossASheetsHoleIsClosedWhereTheInputHoldsIt) {
   EXPECT_EQ(euler_characteristic(quadric_medial_mesh(g, o)), -1);
 }
 
+// The bisector sheet of a right-angled edge along y: the solid between the
+// planes z = ±x (x > 0), its sheet z = 0, each ball (x, y, 0) of radius
+// x sin 45° touching both planes, where the outward normals are
+// (−1, 0, ±1)/√2. Every such ball has zero quadric error, so without the
+// radius term the collapses spread the spheres by the length term alone,
+// alike along x and y; a one-radius SCALIS triangle spanning radii r_min to
+// r_max then steps by about their difference. The radius term makes a
+// collapse across x (Δr = Δx sin 45°) dearer than one along y (Δr = 0).
+MedialGraph quadric_wedge_sheet(int n, double x0, double h) {
+  MedialGraph g;
+  const double s = std::sqrt(0.5);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const Vec3 c(x0 + i * h, j * h, 0.0);
+      const double r = c.x() * s;
+      const std::int32_t above = std::int32_t(g.samples.size());
+      g.samples.push_back(c + r * Vec3(-s, 0, s));
+      g.samples.push_back(c + r * Vec3(-s, 0, -s));
+      g.vertices.push_back(MedialVertex{c, r, {above, above + 1, above, above + 1}});
+    }
+  for (int i = 0; i + 1 < n; ++i)
+    for (int j = 0; j + 1 < n; ++j)
+      g.faces.push_back({i * n + j, (i + 1) * n + j, (i + 1) * n + j + 1, i * n + j + 1});
+  return g;
+}
+
+/// The largest difference of radii within one triangle or tube edge of `m`.
+double largest_radius_spread(const MedialMesh& m) {
+  double spread = 0.0;
+  for (const auto& e : m.edges)
+    spread = std::max(spread, std::abs(m.spheres[std::size_t(e[0])].w() - m.spheres[std::size_t(e[1])].w()));
+  for (const auto& t : m.triangles) {
+    const double a = m.spheres[std::size_t(t[0])].w(), b = m.spheres[std::size_t(t[1])].w(),
+                 c = m.spheres[std::size_t(t[2])].w();
+    spread = std::max(spread, std::max({a, b, c}) - std::min({a, b, c}));
+  }
+  return spread;
+}
+
+TEST(QuadricMedialMesh, TheRadiusTermKeepsASheetsTrianglesNarrowWhereItsRadiusVaries) {
+  // 21 × 21 balls 0.05 apart from x = 0.02 (radius 0.014) to 1.02 (0.72).
+  const MedialGraph g = quadric_wedge_sheet(21, 0.02, 0.05);
+  QuadricOptions o;
+  o.budget = 60;
+  o.radius_weight = 0.0;
+  const MedialMesh plain = quadric_medial_mesh(g, o);
+  o.radius_weight = 0.03;  // the weight measured on CGAL's CAD parts
+  const MedialMesh weighted = quadric_medial_mesh(g, o);
+  for (const MedialMesh* m : {&plain, &weighted}) {
+    EXPECT_LE(primitives(*m), 60u);
+    EXPECT_GE(m->triangles.size(), 30u) << "a sheet stays triangles";
+  }
+  // Each sphere still touches both planes (zero error): r = x sin 45°.
+  for (const Vec4& sphere : weighted.spheres) {
+    EXPECT_NEAR(sphere.z(), 0.0, 1e-9);
+    EXPECT_NEAR(sphere.w(), sphere.x() * std::sqrt(0.5), 1e-9);
+  }
+  // The sheet spans radii 0.014 to 0.72; 60 triangles about equal in x and y
+  // (about 5 × 6 cells) span about a fifth of that each, or more.
+  const double before = largest_radius_spread(plain), after = largest_radius_spread(weighted);
+  EXPECT_GT(before, 0.12);
+  EXPECT_LT(after, 0.6 * before) << "before " << before << ", after " << after;
+}
+
 TEST(QuadricMedialMesh, TubeBecomesAChainOnItsAxis) {
   // A line of balls of radius 0.2 along x, each touching the cylinder
   // y² + z² = 0.2² at four points.
@@ -881,7 +945,7 @@ TEST(MedialFit, TheFirstStageMeasuresSharpCornersWithANewtonStep) {
 // 1.2 from the centre, outside the ball (a cavity where the input is
 // solid), it counts its bounded step: f = 3.24 (1 − 1.44/2.25)² = 0.4199,
 // |∇f| = 4 × 3.24 × 0.36 × 1.2 / 2.25 = 2.488, δ = −0.5801 / √(2.488² +
-// 0.5801²) = −0.2271, weighed as one surface point: the objective is
+// 0.5801²) = −0.2271, weighted as one surface point: the objective is
 // |δ| / √4.
 TEST(MedialFit, AnInsidePointCountsOnlyWhenLeftOutside) {
   MedialMesh ball;

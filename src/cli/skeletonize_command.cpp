@@ -196,6 +196,13 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
                     "The medial fit also keeps the medial vertices at least 3 facets deep inside the result (a fit "
                     "that hollows a thick part out; better on some shapes, worse on others: "
                     "docs/reconstruction_medial.md, \"Inside points\")");
+  command->add_option("--medial-radius-weight", options.medial.quadric_radius_weight,
+                      fmt::format("The medial mesh's simplification also counts the radius varying along an edge, "
+                                  "this × (r_u − r_v)² a plane, so that sheets keep smaller triangles where their "
+                                  "radius varies, as at sharp edges (default {}; docs/reconstruction_medial.md, "
+                                  "\"The medial mesh\")",
+                                  options.medial.quadric_radius_weight))
+      ->check(CLI::Range(0.0, 1e6));
   command->add_option("--medial-newton-steps", options.medial.fit.newton_steps,
                       "Newton steps along the gradient for each fit point's distance to the result, after a first-order "
                       "start (default 1, at most 3; 0: first-order distances only): 1 measures sharp edges and corners "

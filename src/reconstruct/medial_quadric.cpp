@@ -595,7 +595,8 @@ class Simplifier {
     }
     Candidate c;
     const double length = o_.length_weight * 0.5 * q.A.trace() * (su.head<3>() - sv.head<3>()).squaredNorm();
-    c.cost = (best_error + length) * std::pow(stability_ratio(su, sv), 2);
+    const double spread = o_.radius_weight * 0.5 * q.A.trace() * (su.w() - sv.w()) * (su.w() - sv.w());
+    c.cost = (best_error + length + spread) * std::pow(stability_ratio(su, sv), 2);
     c.mean_error = best_error / std::max(0.5 * q.A.trace(), 1e-300);
     c.u = u, c.v = v;
     c.stamp_u = k_.stamp[std::size_t(u)], c.stamp_v = k_.stamp[std::size_t(v)];

@@ -114,6 +114,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   }
   QuadricOptions quadric;
   quadric.budget = m.budget;
+  quadric.radius_weight = m.quadric_radius_weight;
   // The quadric knows planes, not the inside: a sphere merged from a sheet
   // collapsed round a bore may be tangent to all its planes from inside the
   // bore (CGAL's joint: 25 of 296 spheres, up to 18% of the diagonal out).

@@ -40,11 +40,13 @@
 // quadric error times its stability ratio squared, (|c_u − c_v| − |r_u −
 // r_v|) / |c_u − c_v| ∈ [0, 1], which is near 0 for a ball inside its
 // neighbour and 1 across a sheet (a small term in the edge's length keeps
-// the spheres evenly spread where the error is zero). The collapses stop when the primitives
-// (triangles, edges in no triangle, spheres in no edge) fit the budget,
-// or, with an error target (QuadricOptions::error_target), once under the
-// budget, when every collapse left would make a sphere farther than the
-// target from the tangent planes it stands for (the budget is a cap, the
+// the spheres evenly spread where the error is zero; where asked, a term in
+// the radius's change along the edge keeps a sheet's triangles narrow where
+// its radius varies, QuadricOptions::radius_weight). The collapses stop when
+// the primitives (triangles, edges in no triangle, spheres in no edge) fit
+// the budget, or, with an error target (QuadricOptions::error_target), once
+// under the budget, when every collapse left would make a sphere farther than
+// the target from the tangent planes it stands for (the budget is a cap, the
 // target a floor on the error worth a primitive).
 //
 // Where asked (QuadricOptions::inside_samples, with the input's depth),
@@ -107,6 +109,15 @@ struct QuadricOptions {
   /// shortest edges then go first, and the spheres stay evenly spread. Small:
   /// it counts like an error of 1% of the edge's length at each plane.
   double length_weight = 1e-4;
+  /// Added to every cost before the stability ratio scales it: this × the
+  /// number of planes in the summed quadric × (r_u − r_v)². The quadric is
+  /// blind to how a sphere's radius varies along a sheet (every ball of a
+  /// bisector sheet touches both its planes: no error), but a medial
+  /// triangle becomes a SCALIS triangle of one radius, whose surface steps
+  /// where the radius varies across it, most steeply at a sharp edge, where
+  /// it falls to the floor. This keeps the triangles small where the radius
+  /// varies; 0 leaves the budget to the quadric and the length term.
+  double radius_weight = 0.0;
   /// A triangle whose smallest altitude is below this × its smallest
   /// radius and this × its longest side becomes that side, a tube edge: along a tube the
   /// Voronoi faces simplify to strips narrower than the tube, which SCALIS

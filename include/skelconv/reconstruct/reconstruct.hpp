@@ -157,6 +157,14 @@ struct MedialOptions {
   /// balls through samples themselves may reach past a curved surface
   /// between them. Not tuned.
   double merged_overhang = 0.0125;
+  /// QuadricOptions::radius_weight: the collapses' cost of the radius
+  /// varying along an edge, which keeps the sheets' triangles narrow where a
+  /// one-radius triangle would step (at sharp edges most). Off by default:
+  /// 0.03 brought CGAL's 3torus, coupling and oblong box within the CAD
+  /// goals but put the rotor's thin shell over them (2.05% → 3.32% of the
+  /// diagonal: its fit's guard spent its tests), and 0.01 was not measured
+  /// on every shape (docs/reconstruction_medial.md, "The medial mesh").
+  double quadric_radius_weight = 0.0;
   /// The medial graph's samples are at most the diagonal / this apart
   /// (surface_samples.hpp; the curve path's 12 leaves a coarse mesh's large
   /// triangles with few samples, and the medial sheets full of holes).
