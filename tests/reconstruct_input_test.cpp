@@ -812,7 +812,9 @@ TEST(MeshRepair, CubeWithoutAFaceIsClosed) {
   for (const auto& t : triangle_positions(cube)) {
     // the patch lies in z = 0, as the missing face did
     const bool bottom = t[0][2] == 0 && t[1][2] == 0 && t[2][2] == 0;
-    if (bottom) EXPECT_LT((Vec3(t[1][0], t[1][1], 0) - Vec3(t[0][0], t[0][1], 0)).cross(Vec3(t[2][0], t[2][1], 0) - Vec3(t[0][0], t[0][1], 0)).z(), 0.0);
+    if (bottom) {
+      EXPECT_LT((Vec3(t[1][0], t[1][1], 0) - Vec3(t[0][0], t[0][1], 0)).cross(Vec3(t[2][0], t[2][1], 0) - Vec3(t[0][0], t[0][1], 0)).z(), 0.0);
+    }
   }
 }
 

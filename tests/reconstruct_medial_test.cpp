@@ -152,7 +152,9 @@ TEST(QuadricMedialMesh, HoleWiderThanTheBallsIsClosedWhereTheInputHoldsIt) {
     QuadricReport report;
     const MedialMesh m = thin_plate_sheet(1, tunnel, report);
     EXPECT_EQ(euler_characteristic(m), tunnel ? 0 : 1) << (tunnel ? "the tunnel stays" : "a solid plate is a disc");
-    if (!tunnel) EXPECT_GT(report.loops_closed_inside, 0u);
+    if (!tunnel) {
+      EXPECT_GT(report.loops_closed_inside, 0u);
+    }
   }
 }
 

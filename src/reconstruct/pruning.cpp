@@ -53,6 +53,34 @@ std::int32_t vertex_part(const MedialGraph& graph, std::size_t v) {
   return best;
 }
 
+/// For each piece (union-find `root`) of the vertices `from` accepts, the
+/// pair (u, v), v of the piece and u a vertex `to` accepts for v in v's
+/// surface part, with the smallest `score(u, v)` (the first in vertex order
+/// on a tie); a score that is not finite is no pair. Keyed by the piece's
+/// root.
+template <class From, class To, class Score>
+std::map<std::int32_t, std::pair<std::int32_t, std::int32_t>> closest_pairs(const MedialGraph& graph,
+                                                                            const std::vector<std::int32_t>& root,
+                                                                            From from, To to, Score score) {
+  std::map<std::int32_t, std::pair<std::int32_t, std::int32_t>> pair;
+  std::map<std::int32_t, double> best;
+  const std::size_t n = graph.vertices.size();
+  for (std::size_t v = 0; v < n; ++v) {
+    if (!from(v)) continue;
+    const std::int32_t part = vertex_part(graph, v);
+    for (std::size_t u = 0; u < n; ++u) {
+      if (!to(u, v) || vertex_part(graph, u) != part) continue;
+      const double value = score(graph.vertices[u], graph.vertices[v]);
+      if (!std::isfinite(value)) continue;
+      if (const auto at = best.find(root[v]); at == best.end() || value < at->second) {
+        best[root[v]] = value;
+        pair[root[v]] = {std::int32_t(u), std::int32_t(v)};
+      }
+    }
+  }
+  return pair;
+}
+
 /// Keeps the vertices with keep[v], renumbered in their order, and the edges
 /// and faces whose vertices are all kept.
 void compact(MedialGraph& graph, const std::vector<bool>& keep) {
@@ -161,23 +189,13 @@ void connect_tips(MedialGraph& graph, const std::vector<std::int32_t>& root, con
   }
   // The pieces the graph does not reach: the closest overlapping pair of
   // balls (the first in vertex order on a tie), bridged.
-  std::map<std::int32_t, std::pair<std::int32_t, std::int32_t>> bridge;
-  std::map<std::int32_t, double> closest;
-  for (std::size_t v = 0; v < n; ++v) {
-    if (!tipped[v] || nearest.count(root[v]) > 0) continue;
-    const MedialVertex& ball = graph.vertices[v];
-    const std::int32_t part = vertex_part(graph, v);
-    for (std::size_t u = 0; u < n; ++u) {
-      if (!anchored[u] || vertex_part(graph, u) != part) continue;
-      const MedialVertex& other = graph.vertices[u];
-      const double d = (other.centre - ball.centre).norm();
-      if (d >= ball.radius + other.radius) continue;
-      if (const auto at = closest.find(root[v]); at == closest.end() || d < at->second) {
-        closest[root[v]] = d;
-        bridge[root[v]] = {std::int32_t(u), std::int32_t(v)};
-      }
-    }
-  }
+  const auto bridge = closest_pairs(
+      graph, root, [&](std::size_t v) { return tipped[v] && nearest.count(root[v]) == 0; },
+      [&](std::size_t u, std::size_t) { return bool(anchored[u]); },
+      [](const MedialVertex& other, const MedialVertex& ball) {
+        const double d = (other.centre - ball.centre).norm();
+        return d < ball.radius + other.radius ? d : std::numeric_limits<double>::infinity();
+      });
   for (const auto& [r, pair] : bridge) {
     ++report.tips_bridged;
     graph.edges.push_back({pair.first, pair.second, {-1, -1, -1}});
@@ -212,22 +230,12 @@ void connect_tips(MedialGraph& graph, const std::vector<std::int32_t>& root, con
   };
   for (bool more = true; more;) {
     more = false;
-    std::map<std::int32_t, std::pair<std::int32_t, std::int32_t>> gap_pair;
-    std::map<std::int32_t, double> smallest_gap;
-    for (std::size_t v = 0; v < n; ++v) {
-      if (!tipped[v] || joined.count(root[v]) > 0) continue;
-      const MedialVertex& ball = graph.vertices[v];
-      const std::int32_t part = vertex_part(graph, v);
-      for (std::size_t u = 0; u < n; ++u) {
-        if (!held[u] || root[u] == root[v] || vertex_part(graph, u) != part) continue;
-        const MedialVertex& other = graph.vertices[u];
-        const double gap = (other.centre - ball.centre).norm() - ball.radius - other.radius;
-        if (const auto at = smallest_gap.find(root[v]); at == smallest_gap.end() || gap < at->second) {
-          smallest_gap[root[v]] = gap;
-          gap_pair[root[v]] = {std::int32_t(u), std::int32_t(v)};
-        }
-      }
-    }
+    const auto gap_pair = closest_pairs(
+        graph, root, [&](std::size_t v) { return tipped[v] && joined.count(root[v]) == 0; },
+        [&](std::size_t u, std::size_t v) { return held[u] && root[u] != root[v]; },
+        [](const MedialVertex& other, const MedialVertex& ball) {
+          return (other.centre - ball.centre).norm() - ball.radius - other.radius;
+        });
     for (const auto& [r, pair] : gap_pair) {
       if (!clear_between(graph.vertices[std::size_t(pair.first)], graph.vertices[std::size_t(pair.second)])) continue;
       ++report.tips_bridged;
