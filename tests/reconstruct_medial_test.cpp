@@ -601,10 +601,9 @@ MedialGraph graded_sheet(int n, double h, double r, double step) {
 TEST(QuadricMedialMesh, WithinTheBudgetCollapsesGoOnWhileWithinTheErrorTarget) {
   // A sheet of 21 columns whose radius steps by Δ from one column to the
   // next: a collapse within a column makes a sphere of no error, one that
-  // first joins two columns a sphere whose root mean square distance to
-  // its planes (a planes at one radius, b at the next, each vertex 4) is
-  // Δ √(ab) / (a + b), at least 0.208 Δ for a column's 84 planes against
-  // one vertex's 4. Its 800 triangles are within a budget of 1000.
+  // joins two columns a sphere at least Δ / 2 from the planes of one of
+  // them (its radius within Δ / 2 of at most one column's). Its 800
+  // triangles are within a budget of 1000.
   const double step = 0.005;
   const MedialGraph g = graded_sheet(21, 0.05, 0.2, step);
   QuadricOptions o;
@@ -637,9 +636,41 @@ TEST(QuadricMedialMesh, WithinTheBudgetCollapsesGoOnWhileWithinTheErrorTarget) {
   EXPECT_EQ(radii.size(), 21u) << "every column keeps a sphere";
   // Above the error of joining two whole columns (Δ / 2): columns join,
   // and fewer primitives are left.
-  o.error_target = 0.6 * step;
+  o.error_target = 1.5 * step;
   const MedialMesh joined = quadric_medial_mesh(g, o);
   EXPECT_LT(primitives(joined), primitives(columns));
+}
+
+TEST(QuadricMedialMesh, TheErrorTargetBoundsEveryPlaneNotTheirMean) {
+  // A flat sheet of radius r whose middle vertex alone has radius r + D
+  // (its 4 planes at z = ±(r + D)). Every other collapse costs no error;
+  // joining the middle ball to any other leaves a sphere at least D / 2
+  // from the planes of one of the two (its radius within D / 2 of r or
+  // of r + D, the planes' normals ±z). A mean over the planes would let
+  // it join a sphere of many planes (4 planes D off among 1,764 are a
+  // root mean square of D √(4 / 1764) ≈ 0.05 D): the target bounds each
+  // plane, and the middle ball keeps its radius.
+  const double r = 0.2, D = 0.01;
+  const int n = 21;
+  MedialGraph g = quadric_sheet(n, 0.05, r);
+  MedialVertex& middle = g.vertices[std::size_t((n / 2) * n + n / 2)];
+  middle.radius = r + D;
+  g.samples[std::size_t(middle.samples[0])].z() = r + D;
+  g.samples[std::size_t(middle.samples[1])].z() = -(r + D);
+  QuadricOptions o;
+  o.budget = 1000;
+  o.error_target = 0.2 * D;
+  QuadricReport report;
+  const MedialMesh m = quadric_medial_mesh(g, o, &report);
+  EXPECT_EQ(report.stopped_at_error, 1u);
+  EXPECT_GT(report.collapses, 0u) << "the flat sheet collapses";
+  EXPECT_GT(report.over_error_target, 0u) << "joining the middle ball is left undone";
+  std::size_t kept = 0;
+  for (const Vec4& s : m.spheres) {
+    if (std::abs(s.w() - (r + D)) < 1e-9) ++kept;
+    else EXPECT_NEAR(s.w(), r, 0.2 * D) << "a sphere farther than the target from the sheet's planes";
+  }
+  EXPECT_EQ(kept, 1u) << "the middle ball stays apart";
 }
 
 TEST(QuadricMedialMesh, SameGraphSameMesh) {

@@ -41,6 +41,17 @@ struct Quadric {
   double error(const Vec4& s) const { return std::max(0.0, s.dot(A * s) - 2.0 * b.dot(s) + c); }
 };
 
+/// The plane through q with outward unit normal n as (n, n·q): a sphere
+/// (c, r) is n·c + r − n·q from it along n (Quadric::add_plane).
+Vec4 plane(const Vec3& q, const Vec3& n) { return Vec4(n.x(), n.y(), n.z(), n.dot(q)); }
+
+/// The farthest the sphere s is from any of `planes` (0 for none).
+double worst_distance(const Vec4& s, const std::vector<Vec4>& planes) {
+  double worst = 0.0;
+  for (const Vec4& p : planes) worst = std::max(worst, std::abs(p.head<3>().dot(s.head<3>()) + s.w() - p.w()));
+  return worst;
+}
+
 Triangle sorted(Index a, Index b, Index c) {
   Triangle t{a, b, c};
   std::sort(t.begin(), t.end());
@@ -61,6 +72,9 @@ class Complex {
  public:
   std::vector<Vec4> sphere;
   std::vector<Quadric> quadric;
+  // The tangent planes each sphere stands for, (n, n·q) of the planes its
+  // quadric sums, kept only with an error target (QuadricOptions::error_target).
+  std::vector<std::vector<Vec4>> planes;
   std::vector<std::vector<Index>> neighbours;  // sorted
   std::vector<std::vector<Triangle>> triangles_at;
   std::set<Triangle> triangles;
@@ -187,6 +201,8 @@ Complex initial_complex(const MedialGraph& graph, const QuadricOptions& o) {
   const std::size_t n = graph.vertices.size();
   k.sphere.resize(n);
   k.quadric.resize(n);
+  const bool targeted = o.error_target > 0.0;
+  if (targeted) k.planes.resize(n);
   k.neighbours.resize(n);
   k.triangles_at.resize(n);
   k.alive.assign(n, true);
@@ -201,12 +217,17 @@ Complex initial_complex(const MedialGraph& graph, const QuadricOptions& o) {
     for (const std::int32_t s : m.samples) {
       const Vec3& q = graph.samples[std::size_t(s)];
       const Vec3 out = q - m.centre;
-      if (out.norm() > 0.0) k.quadric[i].add_plane(q, out.normalized());
+      if (!(out.norm() > 0.0)) continue;
+      k.quadric[i].add_plane(q, out.normalized());
+      if (targeted) k.planes[i].push_back(plane(q, out.normalized()));
     }
   }
   for (const ReachPoint& p : o.reach_points) {
     const Vec3 out = p.point - k.sphere[std::size_t(p.vertex)].head<3>();
-    if (out.norm() > 0.0) k.quadric[std::size_t(p.vertex)].add_plane(p.point, out.normalized(), o.reach_weight);
+    if (out.norm() > 0.0) {
+      k.quadric[std::size_t(p.vertex)].add_plane(p.point, out.normalized(), o.reach_weight);
+      if (targeted) k.planes[std::size_t(p.vertex)].push_back(plane(p.point, out.normalized()));
+    }
     k.held[std::size_t(p.vertex)] = true;
   }
   for (const MedialEdge& e : graph.edges) k.add_edge(e.a, e.b);
@@ -484,7 +505,6 @@ std::size_t close_sheet_holes(Complex& k, const QuadricOptions& o) {
 
 struct Candidate {
   double cost = 0.0;
-  double mean_error = 0.0;  // the merged sphere's mean squared distance to its planes (QuadricOptions::error_target)
   Index u = 0, v = 0;
   unsigned stamp_u = 0, stamp_v = 0;
   Vec4 merged;
@@ -510,7 +530,6 @@ class Simplifier {
     std::function<bool(const std::array<Index, 3>&)> held;
     if (o_.depth && o_.inside_samples > 0) held = [this](const std::array<Index, 3>& t) { return held_by_input(k_, o_, t); };
     const bool targeted = o_.error_target > 0.0;
-    const double target = o_.error_target * o_.error_target;
     bool within_budget = false;
     while (!queue_.empty()) {
       // Counting the primitives is linear in the complex: only near the
@@ -538,9 +557,10 @@ class Simplifier {
       if (!k_.alive[std::size_t(c.u)] || !k_.alive[std::size_t(c.v)] || k_.stamp[std::size_t(c.u)] != c.stamp_u ||
           k_.stamp[std::size_t(c.v)] != c.stamp_v || !k_.has_edge(c.u, c.v))
         continue;
-      // Its error changes only when u or v does, and each of their
-      // collapses pushes their edges again.
-      if (within_budget && c.mean_error > target) {
+      // Measured only here, past the stamps' check: only once within the
+      // budget, and only for the collapses that could be made.
+      if (within_budget && std::max(worst_distance(c.merged, k_.planes[std::size_t(c.u)]),
+                                    worst_distance(c.merged, k_.planes[std::size_t(c.v)])) > o_.error_target) {
         ++report.over_error_target;
         continue;
       }
@@ -597,7 +617,6 @@ class Simplifier {
     const double length = o_.length_weight * 0.5 * q.A.trace() * (su.head<3>() - sv.head<3>()).squaredNorm();
     const double spread = o_.radius_weight * 0.5 * q.A.trace() * (su.w() - sv.w()) * (su.w() - sv.w());
     c.cost = (best_error + length + spread) * std::pow(stability_ratio(su, sv), 2);
-    c.mean_error = best_error / std::max(0.5 * q.A.trace(), 1e-300);
     c.u = u, c.v = v;
     c.stamp_u = k_.stamp[std::size_t(u)], c.stamp_v = k_.stamp[std::size_t(v)];
     c.merged = best;
@@ -645,6 +664,14 @@ class Simplifier {
     k_.alive[std::size_t(v)] = false;
     k_.held[std::size_t(u)] = k_.held[std::size_t(u)] || k_.held[std::size_t(v)];
     k_.quadric[std::size_t(u)] += k_.quadric[std::size_t(v)];
+    if (!k_.planes.empty()) {
+      // The shorter list appended to the longer: each plane is copied at
+      // most log₂ n times over all the collapses.
+      std::vector<Vec4>&pu = k_.planes[std::size_t(u)], &pv = k_.planes[std::size_t(v)];
+      if (pu.size() < pv.size()) std::swap(pu, pv);
+      pu.insert(pu.end(), pv.begin(), pv.end());
+      std::vector<Vec4>().swap(pv);
+    }
     k_.sphere[std::size_t(u)] = c.merged;
     ++k_.stamp[std::size_t(u)];
     for (const Index w : k_.neighbours[std::size_t(u)]) push(u, w);

@@ -46,7 +46,7 @@
 // the primitives (triangles, edges in no triangle, spheres in no edge) fit
 // the budget, or, with an error target (QuadricOptions::error_target), once
 // under the budget, when every collapse left would make a sphere farther than
-// the target from the tangent planes it stands for (the budget is a cap, the
+// the target from one of the tangent planes it stands for (the budget is a cap, the
 // target a floor on the error worth a primitive).
 //
 // Where asked (QuadricOptions::inside_samples, with the input's depth),
@@ -87,15 +87,16 @@ struct QuadricOptions {
   /// Collapse until the primitives are at most this many.
   std::size_t budget = 500;
   /// Once within the budget, go on collapsing, cheapest first, where the
-  /// merged sphere's error stays within this distance (absolute; 0: off,
-  /// stop at the budget). The error is the root mean square, over the
-  /// tangent planes of every sample the sphere stands for (the contact
-  /// samples of every Voronoi ball merged into it, reach points counted
-  /// `reach_weight` times), of the sphere's distance to the plane
-  /// n·(q − c) − r: how far the ball's surface is from the input's along
-  /// its normal at those samples, on average. So after the stop every
-  /// sphere merged under the budget is within the target of its planes in
-  /// that mean (a sphere merged to reach the budget may not be), and the
+  /// merged sphere stays within this distance (absolute; 0: off, stop at
+  /// the budget) of every tangent plane it stands for: the planes of every
+  /// sample the sphere stands for (the contact samples of every Voronoi
+  /// ball merged into it, and the reach points), the sphere's distance to
+  /// the plane being |n·(q − c) − r|, how far the ball's surface is from
+  /// the input's along its normal at that sample. The farthest plane, not
+  /// a mean: a mean over a sphere of many planes lets it stand far from a
+  /// few of them (a thin part's end, a tube's turn). So after the stop
+  /// every sphere merged under the budget is within the target of each of
+  /// its planes (a sphere merged to reach the budget may not be), and the
   /// collapses that would make one farther are left undone. It bounds the
   /// balls of the medial mesh, not the surface the fit makes of them.
   double error_target = 0.0;
