@@ -181,9 +181,9 @@ CLI::App* add_skeletonize_command(CLI::App& app, SkeletonizeOptions& options) {
       ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));
   command->add_option("--medial-error", options.medial.error_target,
                       fmt::format("Fewer primitives where they are not needed: once within --budget, the medial mesh is "
-                                  "simplified further while each merged sphere stays within this × the diagonal (root "
-                                  "mean square) of the input's tangent planes at the samples it stands for (default "
-                                  "{}; 0: off, simplified to the budget)",
+                                  "simplified further while each merged sphere stays within this × the diagonal of every "
+                                  "tangent plane of the input at the samples it stands for (default {}: off, "
+                                  "simplified to the budget; 0.008 gives a dumbbell 16 primitives)",
                                   options.medial.error_target))
       ->check(CLI::Range(0.0, 1.0));
   command->add_option("--medial-prune-angle", options.medial.prune_angle_degrees,
