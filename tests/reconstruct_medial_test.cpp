@@ -386,21 +386,24 @@ TEST(TubeEnds, ASpikesSphereBeyondGoesBackToTheInputsSurface) {
 
 // A ball on a neck: the unit ball at the origin and a tube of radius 0.2
 // along −x into it (the input's depth the larger of the two's). The
-// medial mesh: the ball's sphere B (radius 1 at the origin) at the end of
-// a tube edge from the neck's sphere N (radius 0.2 at x = −1.2). B is
-// wider than N by 0.8, more than half their distance 1.2, and one radius
-// beyond it (x = 1) the input ends: a bulb. It gets no sphere beyond (which
-// would stand on the ball's surface with the ball's radius, a capsule a
-// radius longer than the input) but a copy of its sphere, isolated. N's
-// end, a tube's, is extended one radius on as before. With the rule off
-// (bulb slope 0) B's sphere beyond is (1, 0, 0), radius 1.
+// medial mesh: the ball's sphere B at the end of a tube edge from the
+// neck's sphere N (radius 0.2 at x = −1.2). B's radius is 1.02, a little
+// more than its centre's depth 1, as a merged sphere's may be (the elk's:
+// 24.0 at 23.7 deep), so it is shallower than its radius, as a tapering
+// tip is, and must still be found a bulb. B is wider than N by 0.82, more
+// than half their distance 1.2, and one radius beyond it (x = 1.02) the
+// input ends: a bulb. It gets no sphere beyond (which would stand on the
+// ball's surface with the ball's radius, a capsule a radius longer than
+// the input) but a copy of its sphere, isolated. N's end, a tube's, is
+// extended one radius on as before. With the rule off (bulb slope 0) B's
+// sphere beyond is (1.02, 0, 0), radius 1.02.
 TEST(TubeEnds, ABulbsBallIsAnIsolatedSphereNotACapsule) {
   const auto depth = [](const Vec3& p) {
     const double neck = std::min(0.2 - std::hypot(p.y(), p.z()), p.x() + 3.0);
     return std::max(1.0 - p.norm(), neck);
   };
   reconstruct::MedialMesh m;
-  m.spheres = {Vec4(-1.2, 0, 0, 0.2), Vec4(0, 0, 0, 1.0)};
+  m.spheres = {Vec4(-1.2, 0, 0, 0.2), Vec4(0, 0, 0, 1.02)};
   m.edges = {{0, 1}};
   std::size_t bulbs = 0;
   EXPECT_EQ(detail::extend_tube_ends(m, 1.0, 0.5, 2.0, 0.5, depth, &bulbs), 0u);
@@ -410,16 +413,16 @@ TEST(TubeEnds, ABulbsBallIsAnIsolatedSphereNotACapsule) {
   EXPECT_EQ(m.edges[1], (std::array<std::int32_t, 2>{0, 2}));
   EXPECT_NEAR((m.spheres[2] - Vec4(-1.4, 0, 0, 0.2)).norm(), 0.0, 1e-15);
   ASSERT_EQ(m.isolated, std::vector<std::int32_t>{3});
-  EXPECT_EQ(m.spheres[3], Vec4(0, 0, 0, 1.0));
+  EXPECT_EQ(m.spheres[3], Vec4(0, 0, 0, 1.02));
   // Off: a sphere beyond on the ball's surface.
   reconstruct::MedialMesh off;
-  off.spheres = {Vec4(-1.2, 0, 0, 0.2), Vec4(0, 0, 0, 1.0)};
+  off.spheres = {Vec4(-1.2, 0, 0, 0.2), Vec4(0, 0, 0, 1.02)};
   off.edges = {{0, 1}};
   detail::extend_tube_ends(off, 1.0, 0.5, 2.0, 0.0, depth, &bulbs);
   EXPECT_EQ(bulbs, 0u);
   EXPECT_TRUE(off.isolated.empty());
   ASSERT_EQ(off.spheres.size(), 4u);
-  EXPECT_NEAR((off.spheres[3] - Vec4(1, 0, 0, 1.0)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((off.spheres[3] - Vec4(1.02, 0, 0, 1.02)).norm(), 0.0, 1e-15);
   // A tube that widens into a body (the input goes on, 2.5 deep, one
   // radius beyond its end): no bulb, extended as before.
   const auto body = [](const Vec3& p) { return 3.0 - (p - Vec3(1, 0, 0)).norm(); };
