@@ -374,7 +374,7 @@ TEST(TubeEnds, ASpikesSphereBeyondGoesBackToTheInputsSurface) {
   m.spheres = {Vec4(-0.3, 0, 0, 0.6), Vec4(0, 0, 0, 0.6), Vec4(0, 0.92, 0, 0.2), Vec4(0.905 * s, -0.905 * s, 0, 0.1)};
   m.edges = {{0, 1}, {1, 2}, {1, 3}};
   const auto depth = [](const Vec3& x) { return 1.0 - x.norm(); };
-  EXPECT_EQ(detail::extend_tube_ends(m, 1.0, 0.5, 0.0, depth), 1u);
+  EXPECT_EQ(detail::extend_tube_ends(m, 1.0, 0.5, 0.0, 0.5, depth), 1u);
   ASSERT_EQ(m.spheres.size(), 7u);
   ASSERT_EQ(m.edges.size(), 6u);
   EXPECT_EQ(m.edges[3], (std::array<std::int32_t, 2>{0, 4}));
@@ -384,6 +384,57 @@ TEST(TubeEnds, ASpikesSphereBeyondGoesBackToTheInputsSurface) {
   EXPECT_NEAR((m.spheres[5] - Vec4(0, 1, 0, 0.2)).norm(), 0.0, 1e-9);
   EXPECT_GE(depth(m.spheres[5].head<3>()), 0.0);
   EXPECT_NEAR((m.spheres[6] - Vec4(1.005 * s, -1.005 * s, 0, 0.1)).norm(), 0.0, 1e-15);
+}
+
+// A ball on a neck: the unit ball at the origin and a tube of radius 0.2
+// along −x into it (the input's depth the larger of the two's). The
+// medial mesh: the ball's sphere B at the end of a tube edge from the
+// neck's sphere N (radius 0.2 at x = −1.2). B's radius is 1.02, a little
+// more than its centre's depth 1, as a merged sphere's may be (the elk's:
+// 24.0 at 23.7 deep), so it is shallower than its radius, as a tapering
+// tip is, and must still be found a bulb. B is wider than N by 0.82, more
+// than half their distance 1.2, and one radius beyond it (x = 1.02) the
+// input ends: a bulb. It gets no sphere beyond (which would stand on the
+// ball's surface with the ball's radius, a capsule a radius longer than
+// the input) but a copy of its sphere, isolated. N's end, a tube's, is
+// extended one radius on as before. With the rule off (bulb slope 0) B's
+// sphere beyond is (1.02, 0, 0), radius 1.02.
+TEST(TubeEnds, ABulbsBallIsAnIsolatedSphereNotACapsule) {
+  const auto depth = [](const Vec3& p) {
+    const double neck = std::min(0.2 - std::hypot(p.y(), p.z()), p.x() + 3.0);
+    return std::max(1.0 - p.norm(), neck);
+  };
+  reconstruct::MedialMesh m;
+  m.spheres = {Vec4(-1.2, 0, 0, 0.2), Vec4(0, 0, 0, 1.02)};
+  m.edges = {{0, 1}};
+  std::size_t bulbs = 0;
+  EXPECT_EQ(detail::extend_tube_ends(m, 1.0, 0.5, 2.0, 0.5, depth, &bulbs), 0u);
+  EXPECT_EQ(bulbs, 1u);
+  ASSERT_EQ(m.spheres.size(), 4u);
+  ASSERT_EQ(m.edges.size(), 2u);
+  EXPECT_EQ(m.edges[1], (std::array<std::int32_t, 2>{0, 2}));
+  EXPECT_NEAR((m.spheres[2] - Vec4(-1.4, 0, 0, 0.2)).norm(), 0.0, 1e-15);
+  ASSERT_EQ(m.isolated, std::vector<std::int32_t>{3});
+  EXPECT_EQ(m.spheres[3], Vec4(0, 0, 0, 1.02));
+  // Off: a sphere beyond on the ball's surface.
+  reconstruct::MedialMesh off;
+  off.spheres = {Vec4(-1.2, 0, 0, 0.2), Vec4(0, 0, 0, 1.02)};
+  off.edges = {{0, 1}};
+  detail::extend_tube_ends(off, 1.0, 0.5, 2.0, 0.0, depth, &bulbs);
+  EXPECT_EQ(bulbs, 0u);
+  EXPECT_TRUE(off.isolated.empty());
+  ASSERT_EQ(off.spheres.size(), 4u);
+  EXPECT_NEAR((off.spheres[3] - Vec4(1.02, 0, 0, 1.02)).norm(), 0.0, 1e-15);
+  // A tube that widens into a body (the input goes on, 2.5 deep, one
+  // radius beyond its end): no bulb, extended as before.
+  const auto body = [](const Vec3& p) { return 3.0 - (p - Vec3(1, 0, 0)).norm(); };
+  reconstruct::MedialMesh w;
+  w.spheres = {Vec4(-0.5, 0, 0, 0.2), Vec4(0, 0, 0, 0.5)};
+  w.edges = {{0, 1}};
+  detail::extend_tube_ends(w, 1.0, 0.5, 2.0, 0.5, body, &bulbs);
+  EXPECT_EQ(bulbs, 0u);
+  EXPECT_TRUE(w.isolated.empty());
+  EXPECT_NEAR((w.spheres[3] - Vec4(0.5, 0, 0, 0.5)).norm(), 0.0, 1e-15);
 }
 
 // A horn: a cone along x, apex at x = 1, half-angle asin 0.12 (signed
@@ -402,7 +453,7 @@ TEST(TubeEnds, ATaperingTipsSphereBeyondGoesToWhereTheInputEnds) {
   m.edges = {{0, 1}};
   // The edge's other end, the origin, is 0.12 deep: deeper than its
   // radius, so it is a body's end and keeps one radius on (x = −0.1).
-  EXPECT_EQ(detail::extend_tube_ends(m, 1.0, 0.5, 2.0, horn), 0u);
+  EXPECT_EQ(detail::extend_tube_ends(m, 1.0, 0.5, 2.0, 0.5, horn), 0u);
   ASSERT_EQ(m.spheres.size(), 4u);
   EXPECT_NEAR((m.spheres[2] - Vec4(-0.1, 0, 0, 0.1)).norm(), 0.0, 1e-15);
   EXPECT_NEAR((m.spheres[3] - Vec4(1.0, 0, 0, 0.1)).norm(), 0.0, 1e-9);
@@ -411,7 +462,7 @@ TEST(TubeEnds, ATaperingTipsSphereBeyondGoesToWhereTheInputEnds) {
   reconstruct::MedialMesh off;
   off.spheres = {Vec4(0, 0, 0, 0.1), Vec4(0.5, 0, 0, 0.1)};
   off.edges = {{0, 1}};
-  detail::extend_tube_ends(off, 1.0, 0.5, 0.0, horn);
+  detail::extend_tube_ends(off, 1.0, 0.5, 0.0, 0.5, horn);
   EXPECT_NEAR((off.spheres[3] - Vec4(0.6, 0, 0, 0.1)).norm(), 0.0, 1e-15);
   // A body beyond: the cone turned round (apex at x = −1, widening past
   // the tip). The tip at 0.5, radius 0.2, is 0.18 deep, but the input is
@@ -420,7 +471,7 @@ TEST(TubeEnds, ATaperingTipsSphereBeyondGoesToWhereTheInputEnds) {
   reconstruct::MedialMesh b;
   b.spheres = {Vec4(0, 0, 0, 0.2), Vec4(0.5, 0, 0, 0.2)};
   b.edges = {{0, 1}};
-  detail::extend_tube_ends(b, 1.0, 0.5, 2.0, body);
+  detail::extend_tube_ends(b, 1.0, 0.5, 2.0, 0.5, body);
   EXPECT_NEAR((b.spheres[3] - Vec4(0.7, 0, 0, 0.2)).norm(), 0.0, 1e-15);
   // A tube going on at its depth to a round cap (a capsule of radius 0.1
   // from x = −1 to 1): the tip 0.02 off its axis at x = 0 is 0.08 deep,
@@ -432,7 +483,7 @@ TEST(TubeEnds, ATaperingTipsSphereBeyondGoesToWhereTheInputEnds) {
   reconstruct::MedialMesh c;
   c.spheres = {Vec4(-0.5, 0.02, 0, 0.1), Vec4(0, 0.02, 0, 0.1)};
   c.edges = {{0, 1}};
-  detail::extend_tube_ends(c, 1.0, 0.5, 2.0, capsule);
+  detail::extend_tube_ends(c, 1.0, 0.5, 2.0, 0.5, capsule);
   EXPECT_NEAR((c.spheres[3] - Vec4(0.1, 0.02, 0, 0.1)).norm(), 0.0, 1e-15);
 }
 

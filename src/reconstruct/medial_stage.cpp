@@ -185,7 +185,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
   // beyond moved back (extend_tube_ends), tubes added out to sharp tips
   // (reach_unreached_tips).
   struct EndCounts {
-    std::size_t spikes = 0, tip_tubes = 0;
+    std::size_t spikes = 0, tip_tubes = 0, bulbs = 0;
   };
   // The simplified medial mesh of `g`, its tube ends extended, at most
   // `budget` primitives; `inside_samples` as QuadricOptions's.
@@ -202,15 +202,16 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
       options.reach_weight = m.tip_end_weight;
     }
     MedialMesh mesh = quadric_medial_mesh(g, options, &q);
-    ends.spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach, quadric.depth);
+    ends.spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach,
+                                           m.end_bulb_slope, quadric.depth, &ends.bulbs);
     ends.tip_tubes = reach_tips(options, mesh);
     // Each tube end got one more edge: simplified further where that
     // overruns the budget.
     while (primitives(mesh) > budget && options.budget > 1) {
       options.budget -= std::min(options.budget - 1, primitives(mesh) - budget);
       mesh = quadric_medial_mesh(g, options, &q);
-      ends.spikes =
-          detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach, quadric.depth);
+      ends.spikes = detail::extend_tube_ends(mesh, m.end_extension, m.end_spike_depth, m.end_taper_reach,
+                                             m.end_bulb_slope, quadric.depth, &ends.bulbs);
       ends.tip_tubes = reach_tips(options, mesh);
     }
     return mesh;
@@ -277,6 +278,7 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
       for (std::size_t p = 0; p < part_total; ++p) {
         const QuadricReport& pr = reports[p];
         ends.spikes += part_ends[p].spikes, ends.tip_tubes += part_ends[p].tip_tubes;
+        ends.bulbs += part_ends[p].bulbs;
         q.collapses += pr.collapses, q.refused_by_link += pr.refused_by_link;
         q.loops_closed += pr.loops_closed, q.loops_closed_inside += pr.loops_closed_inside;
         q.bridges_closed += pr.bridges_closed, q.holes_closed += pr.holes_closed, q.tips_held += pr.tips_held;
@@ -328,6 +330,10 @@ Stage medial_stage(const TriangleMesh& surface, const ReconstructOptions& o, Med
       o.progress(fmt::format("medial mesh: {} tubes added out to sharp tips the mesh falls short of by half a sample "
                              "spacing or more",
                              ends.tip_tubes));
+    if (o.progress && ends.bulbs > 0)
+      o.progress(fmt::format("medial mesh: {} bulbs (a tube end's ball wider than its tube, the input ending with it) "
+                             "given as isolated spheres, no sphere beyond",
+                             ends.bulbs));
     if (part_total > 1 && o.progress) {
       std::vector<std::size_t> held(part_total, 0);
       for (std::size_t p = 0; p < part_total; ++p) held[p] = primitives(medial_mesh_part(mesh, std::int32_t(p)));

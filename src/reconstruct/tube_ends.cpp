@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -72,7 +73,7 @@ double tapering_reach(const reconstruct::Vec4& tip, const Vec3& u, double length
 }  // namespace
 
 std::size_t extend_tube_ends(reconstruct::MedialMesh& mesh, double factor, double spike_depth, double taper_reach,
-                             const std::function<double(const Vec3&)>& depth) {
+                             double bulb_slope, const std::function<double(const Vec3&)>& depth, std::size_t* bulbs) {
   if (factor <= 0.0) return 0;
   std::vector<int> edges(mesh.spheres.size(), 0);
   std::vector<bool> on_sheet(mesh.spheres.size(), false);
@@ -81,6 +82,7 @@ std::size_t extend_tube_ends(reconstruct::MedialMesh& mesh, double factor, doubl
     for (const std::int32_t i : t) on_sheet[std::size_t(i)] = true;
   const std::size_t edge_count = mesh.edges.size();
   std::size_t shortened = 0;
+  if (bulbs != nullptr) *bulbs = 0;
   for (std::size_t k = 0; k < edge_count; ++k) {
     for (int side = 0; side < 2; ++side) {
       const std::int32_t end = mesh.edges[k][std::size_t(side)], other = mesh.edges[k][std::size_t(1 - side)];
@@ -108,6 +110,21 @@ std::size_t extend_tube_ends(reconstruct::MedialMesh& mesh, double factor, doubl
         // coordinates, with margin): no sphere beyond.
         const Vec3 beyond = tip.head<3>() + length * u;
         if (length <= 1e-6 * std::max(tip.head<3>().cwiseAbs().maxCoeff(), beyond.cwiseAbs().maxCoeff())) continue;
+      }
+      else if (bulb_slope > 0.0 && tip.w() - mesh.spheres[std::size_t(other)].w() > bulb_slope * direction.norm() &&
+               depth(tip.head<3>() + length * u) < 0.5 * tip.w()) {
+        // A bulb: the tip's ball is the round lobe itself, wider than the
+        // tube it ends by more than bulb_slope × the edge, and the input
+        // ends about where its ball does (the sphere beyond would stick
+        // out of the input by more than half its radius). A segment out
+        // to a sphere beyond would make a capsule of the ball, a radius
+        // longer than the input, which the fit then shrinks, ball and all.
+        // Its ball is given as an isolated sphere at the tip instead: its
+        // surface is the ball's.
+        mesh.spheres.push_back(tip);
+        mesh.isolated.push_back(std::int32_t(mesh.spheres.size() - 1));
+        if (bulbs != nullptr) ++*bulbs;
+        continue;
       }
       else if (taper_reach > 0.0 && tip_depth < tip.w())
         length = std::max(length, tapering_reach(tip, u, length, taper_reach, depth));

@@ -41,8 +41,21 @@ namespace skelconv::detail {
 /// spacing), the sphere beyond goes to where the input
 /// ends along the edge instead, so that the segment reaches into the tip.
 /// 0 turns it off.
+///
+/// And a bulb: a tube end whose radius exceeds its neighbour's by more
+/// than `bulb_slope` × their distance (a round lobe reached through a
+/// neck, whose ball the collapses kept at its centre) and whose sphere
+/// beyond would be less than half its radius deep (the input ends about
+/// where the tip's ball does: the ball is the cap). A segment out to a
+/// sphere beyond there makes a capsule of the ball, up to a radius past
+/// the input, and the fit, pulling that surface back, shrinks the tip's
+/// radius with the sphere beyond's, the ball with it. It gets no sphere
+/// beyond; a copy of its sphere is added as an isolated sphere (a point,
+/// whose surface is that ball), so the primitives are as many.
+/// `bulbs` (if set) gets how many. 0 turns it off.
 std::size_t extend_tube_ends(reconstruct::MedialMesh& mesh, double factor, double spike_depth, double taper_reach,
-                             const std::function<double(const Vec3&)>& depth);
+                             double bulb_slope, const std::function<double(const Vec3&)>& depth,
+                             std::size_t* bulbs = nullptr);
 
 /// A sharp tip the simplified mesh still falls short of: for each point q
 /// of `tips` (unreached_tips.hpp) whose nearest sphere (c, r) (the least

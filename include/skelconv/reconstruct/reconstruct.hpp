@@ -141,6 +141,15 @@ struct MedialOptions {
   /// edge more than this × as far as its sphere beyond (a horn's tip) gets
   /// its sphere beyond where the input ends instead; 0 = never.
   double end_taper_reach = 2.0;
+  /// A tube end whose radius exceeds its neighbour's by more than this ×
+  /// their distance, and whose sphere beyond would stick out of the input
+  /// by more than half its radius, is a bulb (a round lobe reached through
+  /// a neck): its ball is given as an isolated sphere, no sphere beyond
+  /// (docs/reconstruction_medial.md, "Bulbs at tube ends"); 0 = never.
+  /// 0.5: a tube's radius grows along its length far less steeply than
+  /// that (a cone of 30° half-angle); the elk's ball at the end of its
+  /// neck, 0.76.
+  double end_bulb_slope = 0.5;
   /// The primitives' kernel: compact, degree 4, this σ (docs/cli_skeleton.md:
   /// support σ × the radius). Compact, not Cauchy: the field's index then
   /// evaluates only the primitives near a point, and a medial mesh has
