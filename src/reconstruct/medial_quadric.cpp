@@ -667,7 +667,7 @@ class Simplifier {
     if (!k_.planes.empty()) {
       // The shorter list appended to the longer: each plane is copied at
       // most log₂ n times over all the collapses.
-      std::vector<Vec4>&pu = k_.planes[std::size_t(u)], &pv = k_.planes[std::size_t(v)];
+      std::vector<Vec4> &pu = k_.planes[std::size_t(u)], &pv = k_.planes[std::size_t(v)];
       if (pu.size() < pv.size()) std::swap(pu, pv);
       pu.insert(pu.end(), pv.begin(), pv.end());
       std::vector<Vec4>().swap(pv);
