@@ -386,6 +386,14 @@ TEST(TubeEnds, ASpikesSphereBeyondGoesBackToTheInputsSurface) {
   EXPECT_NEAR((m.spheres[6] - Vec4(1.005 * s, -1.005 * s, 0, 0.1)).norm(), 0.0, 1e-15);
 }
 
+// A tube of one edge from sphere a to sphere b.
+reconstruct::MedialMesh one_tube(const Vec4& a, const Vec4& b) {
+  reconstruct::MedialMesh m;
+  m.spheres = {a, b};
+  m.edges = {{0, 1}};
+  return m;
+}
+
 // A ball on a neck: the unit ball at the origin and a tube of radius 0.2
 // along −x into it (the input's depth the larger of the two's). The
 // medial mesh: the ball's sphere B at the end of a tube edge from the
@@ -404,9 +412,7 @@ TEST(TubeEnds, ABulbsBallIsAnIsolatedSphereNotACapsule) {
     const double neck = std::min(0.2 - std::hypot(p.y(), p.z()), p.x() + 3.0);
     return std::max(1.0 - p.norm(), neck);
   };
-  reconstruct::MedialMesh m;
-  m.spheres = {Vec4(-1.2, 0, 0, 0.2), Vec4(0, 0, 0, 1.02)};
-  m.edges = {{0, 1}};
+  reconstruct::MedialMesh m = one_tube(Vec4(-1.2, 0, 0, 0.2), Vec4(0, 0, 0, 1.02));
   std::size_t bulbs = 0;
   EXPECT_EQ(detail::extend_tube_ends(m, 1.0, 0.5, 2.0, 0.5, depth, &bulbs), 0u);
   EXPECT_EQ(bulbs, 1u);
@@ -417,9 +423,7 @@ TEST(TubeEnds, ABulbsBallIsAnIsolatedSphereNotACapsule) {
   ASSERT_EQ(m.isolated, std::vector<std::int32_t>{3});
   EXPECT_EQ(m.spheres[3], Vec4(0, 0, 0, 1.02));
   // Off: a sphere beyond on the ball's surface.
-  reconstruct::MedialMesh off;
-  off.spheres = {Vec4(-1.2, 0, 0, 0.2), Vec4(0, 0, 0, 1.02)};
-  off.edges = {{0, 1}};
+  reconstruct::MedialMesh off = one_tube(Vec4(-1.2, 0, 0, 0.2), Vec4(0, 0, 0, 1.02));
   detail::extend_tube_ends(off, 1.0, 0.5, 2.0, 0.0, depth, &bulbs);
   EXPECT_EQ(bulbs, 0u);
   EXPECT_TRUE(off.isolated.empty());
@@ -428,9 +432,7 @@ TEST(TubeEnds, ABulbsBallIsAnIsolatedSphereNotACapsule) {
   // A tube that widens into a body (the input goes on, 2.5 deep, one
   // radius beyond its end): no bulb, extended as before.
   const auto body = [](const Vec3& p) { return 3.0 - (p - Vec3(1, 0, 0)).norm(); };
-  reconstruct::MedialMesh w;
-  w.spheres = {Vec4(-0.5, 0, 0, 0.2), Vec4(0, 0, 0, 0.5)};
-  w.edges = {{0, 1}};
+  reconstruct::MedialMesh w = one_tube(Vec4(-0.5, 0, 0, 0.2), Vec4(0, 0, 0, 0.5));
   detail::extend_tube_ends(w, 1.0, 0.5, 2.0, 0.5, body, &bulbs);
   EXPECT_EQ(bulbs, 0u);
   EXPECT_TRUE(w.isolated.empty());
